@@ -1,0 +1,210 @@
+// fluidbed — forward-mode dual numbers: exact first derivatives of a generic formula.
+//
+// Every closure is written once, as a template on its scalar type S. Evaluated with
+// S = T it gives the value; with S = Dual<T, N> it gives the value and N partial
+// derivatives exact to rounding, with no hand-derived (and hand-mistyped) derivative
+// formulas to maintain. Boost.Math's autodiff does the same for host code, but its
+// types are neither constexpr nor usable in device code and are several times slower
+// per cell; this type is deliberately minimal (the operations closures use) and the
+// tests check it against Boost.Math autodiff and finite differences.
+//
+// Zero convention. Closures are evaluated at exact limits (zero slip, ε = 1) where a
+// factor with an infinite slope (Re^0.687, √φ) meets a factor that is identically
+// zero along that direction. The chain rule then multiplies ∞ by an exact 0. Here a
+// product with an exact zero operand is zero, so a derivative is NaN only where the
+// formula itself is; it may be ±∞ where the true derivative is.
+#pragma once
+
+#include <cmath>
+#include <concepts>
+#include <numbers>
+#include <type_traits>
+
+#include "config.hpp"
+
+namespace fluidbed {
+
+template <class T, int N>
+struct Dual {
+  T value{};
+  T derivative[N]{};
+
+  constexpr Dual() = default;
+  FLUIDBED_HOST_DEVICE constexpr Dual(const T& constant) : value(constant) {}  // NOLINT: constants mix freely
+
+  // The independent variable number `index` (0-based) at `at`.
+  FLUIDBED_HOST_DEVICE static constexpr Dual variable(const T& at, int index) {
+    Dual x(at);
+    x.derivative[index] = T(1);
+    return x;
+  }
+};
+
+template <class S>
+struct is_dual : std::false_type {};
+template <class T, int N>
+struct is_dual<Dual<T, N>> : std::true_type {};
+
+// The plain value of a scalar or a dual number.
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr const T& value_of(const T& x) { return x; }
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr const T& value_of(const Dual<T, N>& x) { return x.value; }
+
+namespace detail {
+
+// a·b with the convention 0·anything = 0 (see the header comment).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr T times(const T& a, const T& b) {
+  return (a == T(0) || b == T(0)) ? T(0) : a * b;
+}
+
+// Chain rule for a unary function: value f, local slope f'(x).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain(const T& f, const T& slope, const Dual<T, N>& x) {
+  Dual<T, N> r(f);
+  for (int i = 0; i < N; ++i) r.derivative[i] = times(slope, x.derivative[i]);
+  return r;
+}
+
+}  // namespace detail
+
+// A plain constant that may be mixed with Dual<T, N> (a literal, or T itself).
+template <class U, class T>
+concept ConstantFor = std::is_arithmetic_v<U> || std::same_as<U, T>;
+
+// ----------------------------------------------------------------------------- arithmetic
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& x) {
+  Dual<T, N> r(-x.value);
+  for (int i = 0; i < N; ++i) r.derivative[i] = -x.derivative[i];
+  return r;
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, const Dual<T, N>& b) {
+  Dual<T, N> r(a.value + b.value);
+  for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] + b.derivative[i];
+  return r;
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, const Dual<T, N>& b) {
+  Dual<T, N> r(a.value - b.value);
+  for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] - b.derivative[i];
+  return r;
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& b) {
+  Dual<T, N> r(a.value * b.value);
+  for (int i = 0; i < N; ++i)
+    r.derivative[i] = detail::times(a.derivative[i], b.value) + detail::times(a.value, b.derivative[i]);
+  return r;
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b) {
+  const T q = a.value / b.value;
+  Dual<T, N> r(q);
+  for (int i = 0; i < N; ++i)
+    r.derivative[i] = (a.derivative[i] - detail::times(q, b.derivative[i])) / b.value;
+  return r;
+}
+
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, const U& c) { return a + Dual<T, N>(T(c)); }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) + a; }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, const U& c) { return a - Dual<T, N>(T(c)); }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) - a; }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const U& c) { return a * Dual<T, N>(T(c)); }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) * a; }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const U& c) { return a / Dual<T, N>(T(c)); }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
+
+// Comparisons look at the value only (branches of piecewise closures).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value <=> b.value; }
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value == b.value; }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const U& c) { return a.value <=> T(c); }
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const U& c) { return a.value == T(c); }
+
+// ----------------------------------------------------------------------------- functions
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> sqrt(const Dual<T, N>& x) {
+  using std::sqrt;
+  const T f = sqrt(x.value);
+  return detail::chain(f, T(1) / (T(2) * f), x);
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> cbrt(const Dual<T, N>& x) {
+  using std::cbrt;
+  const T f = cbrt(x.value);
+  return detail::chain(f, T(1) / (T(3) * f * f), x);
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> exp(const Dual<T, N>& x) {
+  using std::exp;
+  const T f = exp(x.value);
+  return detail::chain(f, f, x);
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> log(const Dual<T, N>& x) {
+  using std::log;
+  return detail::chain(T(log(x.value)), T(1) / x.value, x);
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
+  using std::atan;
+  return detail::chain(T(atan(x.value)), T(1) / (T(1) + x.value * x.value), x);
+}
+
+// x^p for a constant exponent. The slope p·x^(p-1) is formed directly (never
+// x^p·p/x), so x = 0 gives the right 0 or ∞.
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const U& p) {
+  using std::pow;
+  const T exponent(p);
+  const T slope = exponent == T(0) ? T(0) : exponent * T(pow(x.value, exponent - T(1)));
+  return detail::chain(T(pow(x.value, exponent)), slope, x);
+}
+
+// a^y for a constant base a > 0 (or a = 0 with y > 0).
+template <class T, int N, ConstantFor<T> U>
+FLUIDBED_HOST_DEVICE Dual<T, N> pow(const U& a, const Dual<T, N>& y) {
+  using std::log;
+  using std::pow;
+  const T base(a);
+  const T f = pow(base, y.value);
+  return detail::chain(f, base > T(0) ? T(f * log(base)) : T(0), y);
+}
+
+// x^y with both varying; ∂/∂y uses x^y·ln x, whose limit at x = 0 (y > 0) is 0.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const Dual<T, N>& y) {
+  using std::log;
+  using std::pow;
+  const T f = pow(x.value, y.value);
+  const T slope_x = y.value == T(0) ? T(0) : y.value * T(pow(x.value, y.value - T(1)));
+  const T slope_y = x.value > T(0) ? T(f * log(x.value)) : T(0);
+  Dual<T, N> r(f);
+  for (int i = 0; i < N; ++i)
+    r.derivative[i] = detail::times(slope_x, x.derivative[i]) + detail::times(slope_y, y.derivative[i]);
+  return r;
+}
+
+}  // namespace fluidbed

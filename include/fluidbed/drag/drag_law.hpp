@@ -1,0 +1,188 @@
+// fluidbed — the calling shape shared by every drag law.
+//
+// A drag law is a small value type (its parameters) deriving from DragLaw<Law>. It
+// supplies one generic kernel, `native_beta(voidage, slip, fluid, diameter)`, written
+// in the law's native buoyancy convention and templated on the scalar type so that the
+// same code yields the value (S = T) and exact partial derivatives (S = Dual<T, 2>).
+// DragLaw<Law> turns the kernel into the three public entry points:
+//
+//   law(state)                    hot path, value             -> DragCoefficient<T>
+//   law.with_derivatives(state)   hot path, ∂β/∂ε and ∂β/∂w   -> DragCoefficientWithDerivatives<T>
+//   law.checked(state)            validates, throws std::domain_error, then law(state)
+//
+// Convention. β [kg m⁻³ s⁻¹] is per unit suspension volume: the drag on the particles
+// per unit volume is β (u_f − v_p). Its value depends on the buoyancy the host code
+// uses (seed 000 §3.4.2, eq. 3.19):
+//   classical          buoyancy −φ ρ_f g  (the seed's and most correlations' papers)
+//   pressure_gradient  buoyancy −φ ∇p     (OpenFOAM, MFiX model A, Fluent)
+//   β_pressure_gradient = ε · β_classical.
+// A result never exposes a bare number: the caller must name the convention.
+#pragma once
+
+#include <string_view>
+
+#include "../core/config.hpp"
+#include "../core/dual.hpp"
+#include "../core/errors.hpp"
+#include "../properties.hpp"
+
+namespace fluidbed::drag {
+
+enum class Buoyancy {
+  classical,          // −φ ρ_f g
+  pressure_gradient,  // −φ ∇p
+};
+
+// The local state a drag law needs. slip is the interstitial slip speed |u_f − v_p|.
+template <class T>
+struct DragState {
+  T voidage;       // ε, fluid volume fraction, in (0, 1]
+  T slip;          // w [m s⁻¹], >= 0
+  Fluid<T> fluid;  // ρ_f, μ_f
+  T diameter;      // d [m]
+};
+
+// Where a law was fitted or derived; outside it the law is still finite and positive,
+// but it is an extrapolation.
+struct ValidityRange {
+  double voidage_min, voidage_max;    // ε
+  double reynolds_min, reynolds_max;  // Re = ρ_f ε w d / μ_f
+};
+
+// β in one convention, convertible to the other; the caller names the convention.
+template <class T>
+class DragCoefficient {
+ public:
+  FLUIDBED_HOST_DEVICE constexpr DragCoefficient(Buoyancy native, T beta_native, T voidage)
+      : native_(native), beta_(beta_native), voidage_(voidage) {}
+
+  // β for a momentum equation with classical buoyancy −φ ρ_f g.
+  FLUIDBED_HOST_DEVICE constexpr T classical() const {
+    return native_ == Buoyancy::classical ? beta_ : beta_ / voidage_;
+  }
+  // β for a momentum equation with buoyancy −φ ∇p (= ε β_classical).
+  FLUIDBED_HOST_DEVICE constexpr T pressure_gradient() const {
+    return native_ == Buoyancy::pressure_gradient ? beta_ : voidage_ * beta_;
+  }
+  FLUIDBED_HOST_DEVICE constexpr T in(Buoyancy convention) const {
+    return convention == Buoyancy::classical ? classical() : pressure_gradient();
+  }
+  FLUIDBED_HOST_DEVICE constexpr Buoyancy native_convention() const { return native_; }
+
+ private:
+  Buoyancy native_;
+  T beta_;
+  T voidage_;
+};
+
+// β and its partial derivatives at fixed fluid properties and diameter.
+template <class T>
+struct DragDerivatives {
+  T value;      // β [kg m⁻³ s⁻¹]
+  T d_voidage;  // ∂β/∂ε at fixed w
+  T d_slip;     // ∂β/∂w at fixed ε
+};
+
+// β with derivatives, in one convention, convertible to the other.
+//
+// At w = 0, ∂β/∂w is +∞ for laws whose C_D·Re contains a fractional power of Re
+// (Schiller–Naumann Re^0.687, Dallavalle √Re): that is the true derivative. What an
+// implicit solver linearises is the drag force per unit volume, βw, whose derivative
+// `force_slip_derivative` is finite everywhere (it equals β at w = 0).
+template <class T>
+class DragCoefficientWithDerivatives {
+ public:
+  FLUIDBED_HOST_DEVICE constexpr DragCoefficientWithDerivatives(Buoyancy native, DragDerivatives<T> beta_native,
+                                                                T voidage, T slip)
+      : native_(native), beta_(beta_native), voidage_(voidage), slip_(slip) {}
+
+  FLUIDBED_HOST_DEVICE constexpr DragDerivatives<T> classical() const {
+    if (native_ == Buoyancy::classical) return beta_;
+    const T e = voidage_;  // β_cl = β_pg / ε
+    return {beta_.value / e, (beta_.d_voidage - beta_.value / e) / e, beta_.d_slip / e};
+  }
+  FLUIDBED_HOST_DEVICE constexpr DragDerivatives<T> pressure_gradient() const {
+    if (native_ == Buoyancy::pressure_gradient) return beta_;
+    const T e = voidage_;  // β_pg = ε β_cl
+    return {e * beta_.value, beta_.value + e * beta_.d_voidage, e * beta_.d_slip};
+  }
+  FLUIDBED_HOST_DEVICE constexpr DragDerivatives<T> in(Buoyancy convention) const {
+    return convention == Buoyancy::classical ? classical() : pressure_gradient();
+  }
+  // ∂(β w)/∂w in the given convention: finite at w = 0, where it equals β.
+  FLUIDBED_HOST_DEVICE constexpr T force_slip_derivative(Buoyancy convention) const {
+    const DragDerivatives<T> b = in(convention);
+    return slip_ > T(0) ? b.value + slip_ * b.d_slip : b.value;
+  }
+  FLUIDBED_HOST_DEVICE constexpr DragCoefficient<T> coefficient() const {
+    return DragCoefficient<T>(native_, beta_.value, voidage_);
+  }
+
+ private:
+  Buoyancy native_;
+  DragDerivatives<T> beta_;
+  T voidage_;
+  T slip_;
+};
+
+// Validates a state for the checked entry points; `function` names the caller.
+template <class T>
+void validate(std::string_view function, const DragState<T>& s) {
+  require_in_half_open(function, "voidage", s.voidage, T(0), T(1));
+  require_non_negative(function, "slip", s.slip);
+  require_positive(function, "fluid.density", s.fluid.density);
+  require_positive(function, "fluid.viscosity", s.fluid.viscosity);
+  require_positive(function, "diameter", s.diameter);
+}
+
+// CRTP base: Law provides
+//   static constexpr Buoyancy native_buoyancy;
+//   std::string_view name() const;        // the name used for run-time lookup
+//   std::string_view reference() const;   // authors, year, journal, DOI
+//   ValidityRange validity() const;
+//   template <class S, class T> S native_beta(S voidage, S slip, const Fluid<T>&, T diameter) const;
+template <class Law>
+struct DragLaw {
+  // Hot path. Preconditions (asserted in debug builds): ε ∈ (0, 1], w >= 0, ρ_f, μ_f, d > 0,
+  // all finite. Result finite and >= 0 (> 0 for ε < 1).
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr DragCoefficient<T> operator()(const DragState<T>& s) const {
+    FLUIDBED_EXPECTS(s.voidage > T(0) && s.voidage <= T(1) && s.slip >= T(0));
+    FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0) && s.diameter > T(0));
+    return DragCoefficient<T>(Law::native_buoyancy, self().native_beta(s.voidage, s.slip, s.fluid, s.diameter),
+                              s.voidage);
+  }
+
+  // Hot path with ∂β/∂ε and ∂β/∂w (same preconditions).
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr DragCoefficientWithDerivatives<T> with_derivatives(const DragState<T>& s) const {
+    FLUIDBED_EXPECTS(s.voidage > T(0) && s.voidage <= T(1) && s.slip >= T(0));
+    FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0) && s.diameter > T(0));
+    using D = Dual<T, 2>;
+    const D beta = self().native_beta(D::variable(s.voidage, 0), D::variable(s.slip, 1), s.fluid, s.diameter);
+    return DragCoefficientWithDerivatives<T>(
+        Law::native_buoyancy, DragDerivatives<T>{beta.value, beta.derivative[0], beta.derivative[1]}, s.voidage,
+        s.slip);
+  }
+
+  // Checked entry point: throws std::domain_error naming the argument and its value.
+  template <class T>
+  DragCoefficient<T> checked(const DragState<T>& s) const {
+    validate(self().name(), s);
+    return (*this)(s);
+  }
+
+  // True if the state lies inside the range the law was fitted or derived for.
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr bool within_validity(const DragState<T>& s) const {
+    const T re = particle_reynolds(s.fluid, s.diameter, s.voidage, s.slip);
+    const ValidityRange v = self().validity();
+    return s.voidage >= T(v.voidage_min) && s.voidage <= T(v.voidage_max) && re >= T(v.reynolds_min) &&
+           re <= T(v.reynolds_max);
+  }
+
+ private:
+  FLUIDBED_HOST_DEVICE constexpr const Law& self() const { return static_cast<const Law&>(*this); }
+};
+
+}  // namespace fluidbed::drag
