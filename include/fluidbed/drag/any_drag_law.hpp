@@ -1,0 +1,77 @@
+// fluidbed — run-time selection over the whole drag family.
+//
+// Every law shares one calling shape (drag_law.hpp), so a host can pick one at compile
+// time (use the type) or at run time: AnyDragLaw is a std::variant of the family, and
+// make_drag_law(name) returns the law of that name (the names are those of `name()`).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "constant_exponent.hpp"
+#include "di_felice.hpp"
+#include "drag_law.hpp"
+#include "ergun.hpp"
+#include "gidaspow.hpp"
+#include "mazzei_lettieri.hpp"
+
+namespace fluidbed::drag {
+
+using AnyDragLaw = std::variant<Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
+                                DiFelice<DallavalleCoefficient>, DiFelice<SchillerNaumannCoefficient>, MazzeiLettieri>;
+
+// One instance of every law of the family, each preset included.
+inline constexpr std::array all_drag_laws{
+    AnyDragLaw{Ergun{}},
+    AnyDragLaw{ConstantExponentDrag::lewis_1949()},
+    AnyDragLaw{ConstantExponentDrag::wen_yu_1966()},
+    AnyDragLaw{ConstantExponentDrag::kmiec_1982()},
+    AnyDragLaw{ConstantExponentDrag::wen_yu_gidaspow()},
+    AnyDragLaw{GidaspowSwitched{}},
+    AnyDragLaw{GidaspowBlended{}},
+    AnyDragLaw{DiFelice<DallavalleCoefficient>{}},
+    AnyDragLaw{DiFelice<SchillerNaumannCoefficient>{}},
+    AnyDragLaw{MazzeiLettieri{}},
+};
+
+inline std::string_view name_of(const AnyDragLaw& law) {
+  return std::visit([](const auto& l) { return l.name(); }, law);
+}
+
+// The law called `name`, or nothing.
+inline std::optional<AnyDragLaw> find_drag_law(std::string_view name) {
+  for (const AnyDragLaw& law : all_drag_laws)
+    if (name_of(law) == name) return law;
+  return std::nullopt;
+}
+
+// The law called `name`; throws std::invalid_argument listing the known names.
+inline AnyDragLaw make_drag_law(std::string_view name) {
+  if (auto law = find_drag_law(name)) return *law;
+  std::string known;
+  for (const AnyDragLaw& law : all_drag_laws) known += std::string(known.empty() ? "" : ", ") + std::string(name_of(law));
+  throw std::invalid_argument("fluidbed::drag::make_drag_law: unknown drag law '" + std::string(name) +
+                              "'; known laws: " + known);
+}
+
+// β of a run-time-selected law.
+template <class T>
+DragCoefficient<T> evaluate(const AnyDragLaw& law, const DragState<T>& state) {
+  return std::visit([&](const auto& l) { return l(state); }, law);
+}
+
+template <class T>
+DragCoefficientWithDerivatives<T> evaluate_with_derivatives(const AnyDragLaw& law, const DragState<T>& state) {
+  return std::visit([&](const auto& l) { return l.with_derivatives(state); }, law);
+}
+
+template <class T>
+DragCoefficient<T> evaluate_checked(const AnyDragLaw& law, const DragState<T>& state) {
+  return std::visit([&](const auto& l) { return l.checked(state); }, law);
+}
+
+}  // namespace fluidbed::drag

@@ -1,0 +1,4 @@
+// fluidbed — umbrella header: every closure of the library.
+#pragma once
+
+#include "drag/any_drag_law.hpp"

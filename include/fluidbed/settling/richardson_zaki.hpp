@@ -1,0 +1,275 @@
+// fluidbed — the Richardson–Zaki law of homogeneous expansion and correlations for its
+// exponent n.
+//
+//   u_s = u_t ε^n                                            (seed 000 eq. 3.22)
+//
+// u_s: superficial fluid velocity (fluidization) or sedimentation velocity of the
+// suspension; u_t: unhindered terminal velocity of one particle; ε: voidage.
+// Reynolds and Archimedes numbers (properties.hpp):
+//   Re_t = ρ_f u_t d / μ_f                                   (seed 000 eq. 3.23)
+//   Ar   = ρ_f (ρ_p − ρ_f) g d³ / μ_f²
+// wall_ratio is d/D, the particle over the column diameter (0: no wall effect).
+//
+// The correlations differ mainly in their viscous / inertial limits (seed 000 §3.4.3):
+//   richardson_zaki_exponent_mazzei            4.80 / 2.40  (seed 000 eq. 3.24; the library's default)
+//   richardson_zaki_exponent_1954              4.65 / 2.39  (d/D = 0)
+//   richardson_zaki_exponent_rowe              4.70 / 2.343 (the seed rounds to 2.35)
+//   richardson_zaki_exponent_khan_richardson   4.80 / 2.40  (a function of Ar; d/D < 0.0391)
+//   richardson_zaki_exponent_garside_al_dibouni 5.10 / 2.70
+// The per-cell functions are templated on the scalar S (Dual numbers included) and
+// have `_checked` versions that throw std::domain_error naming the argument.
+#pragma once
+
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+
+#include "../core/config.hpp"
+#include "../core/errors.hpp"
+
+namespace fluidbed::settling {
+
+namespace detail {
+
+// The wall factor 1 − 2.4 (d/D)^0.27 of Khan & Richardson (1989).
+template <class S>
+FLUIDBED_HOST_DEVICE S khan_richardson_wall_factor(const S& wall_ratio) {
+  using std::pow;
+  return 1.0 - 2.4 * pow(wall_ratio, 0.27);
+}
+
+// Throws unless 0 <= d/D < 1.
+template <class T>
+void require_wall_ratio(std::string_view function, const T& wall_ratio) {
+  if (!fluidbed::detail::is_finite_number(wall_ratio) || !(wall_ratio >= T(0)) || !(wall_ratio < T(1)))
+    fluidbed::detail::throw_domain_error(function, "wall_ratio", wall_ratio, "must lie in [0, 1)");
+}
+
+}  // namespace detail
+
+// ----------------------------------------------------------------------------- exponents
+
+// Mazzei (2008), seed 000 eq. 3.24; Mazzei & Lettieri (2007), Chem. Eng. Sci. 62,
+// 6129–6142, doi:10.1016/j.ces.2007.06.028:
+//
+//   n = (4.8 + 2.4 · 0.175 Re_t^¾) / (1 + 0.175 Re_t^¾) = 2.4 + 2.4 / (1 + 0.175 Re_t^¾).
+//
+// Rowe's (1987) form with the limits 4.8 (Re_t → 0) and 2.4 (Re_t → ∞) of Khan &
+// Richardson (1989) and Gibilaro (2001). Together with Dallavalle's terminal velocity it is
+// the expansion law the Mazzei–Lettieri drag reproduces exactly (seed 000 §3.4.5).
+// Precondition: Re_t >= 0. Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei(const S& terminal_reynolds) {
+  using std::pow;
+  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
+  const S x = 0.175 * pow(terminal_reynolds, 0.75);
+  return 2.4 + 2.4 / (1.0 + x);
+}
+
+// dn/dRe_t of eq. 3.24 = −0.315 Re_t^−¼ / (1 + 0.175 Re_t^¾)² (0.315 = ¾ · 0.175 · 2.4;
+// seed 000 eq. 3.103, the function N of Table 3.1 in simplified form). −∞ at Re_t = 0.
+// Precondition: Re_t >= 0.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei_derivative(const S& terminal_reynolds) {
+  using std::pow;
+  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
+  const S one_plus_x = 1.0 + 0.175 * pow(terminal_reynolds, 0.75);
+  return -0.315 * pow(terminal_reynolds, -0.25) / (one_plus_x * one_plus_x);
+}
+
+// Richardson, J.F., Zaki, W.N. (1954), "Sedimentation and fluidisation: Part I",
+// Trans. Inst. Chem. Eng. 32, 35–53 (reprinted Chem. Eng. Res. Des. 75 (1997) S82–S100,
+// doi:10.1016/S0263-8762(97)80006-8), with the wall term d/D:
+//
+//   Re_t < 0.2          n = 4.65 + 19.5 d/D
+//   0.2 <= Re_t < 1     n = (4.35 + 17.5 d/D) Re_t^−0.03
+//   1   <= Re_t < 200   n = (4.45 + 18 d/D) Re_t^−0.1
+//   200 <= Re_t < 500   n = 4.45 Re_t^−0.1
+//   500 <= Re_t         n = 2.39
+//
+// Re_t is that of a particle in an unbounded fluid. Piecewise and discontinuous as
+// published: at d/D = 0 the jumps are −0.085 at Re_t = 0.2, +0.10 at 1, 0 at 200 and
+// −0.0004 at 500 (the wall terms add their own). Fitted for 0 <= d/D <~ 0.1.
+// Preconditions: Re_t >= 0, 0 <= d/D < 1.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
+                                                     const std::type_identity_t<S>& wall_ratio = S(0)) {
+  using std::pow;
+  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)) && !(wall_ratio < S(0)) && wall_ratio < S(1));
+  if (terminal_reynolds < 0.2) return 4.65 + 19.5 * wall_ratio;
+  if (terminal_reynolds < 1.0) return (4.35 + 17.5 * wall_ratio) * pow(terminal_reynolds, -0.03);
+  if (terminal_reynolds < 200.0) return (4.45 + 18.0 * wall_ratio) * pow(terminal_reynolds, -0.1);
+  if (terminal_reynolds < 500.0) return 4.45 * pow(terminal_reynolds, -0.1);
+  return S(2.39);
+}
+
+// Rowe, P.N. (1987), "A convenient empirical equation for estimation of the
+// Richardson–Zaki exponent", Chem. Eng. Sci. 42, 2795–2796:
+//
+//   n = (4.7 + 0.41 Re_t^¾) / (1 + 0.175 Re_t^¾),
+//
+// a smooth fit of the 1954 correlation without wall effect; limits 4.7 and
+// 0.41/0.175 = 2.342857 (seed 000 §3.4.3 quotes 2.35). Precondition: Re_t >= 0.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_rowe(const S& terminal_reynolds) {
+  using std::pow;
+  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
+  const S x = pow(terminal_reynolds, 0.75);
+  return (4.7 + 0.41 * x) / (1.0 + 0.175 * x);
+}
+
+// Khan, A.R., Richardson, J.F. (1989), "Fluid-particle interactions and flow
+// characteristics of fluidized beds and settling suspensions of spherical particles",
+// Chem. Eng. Commun. 78, 111–130:
+//
+//   (4.8 − n)/(n − 2.4) = X,   X = 0.043 Ar^0.57 [1 − 2.4 (d/D)^0.27],
+//   i.e. n = 2.4 + 2.4/(1 + X),
+//
+// a function of Ar (not of Re_t). Limits 4.8 (Ar → 0) and 2.4 (Ar → ∞). The wall factor
+// is positive only for d/D < (1/2.4)^(1/0.27) = 0.0391; beyond, X < 0, n grows with Ar
+// and has a pole at X = −1: the correlation has left its data, and such d/D are out of
+// domain. Preconditions: Ar >= 0, d/D >= 0 with 1 − 2.4 (d/D)^0.27 > 0.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_khan_richardson(const S& archimedes,
+                                                                const std::type_identity_t<S>& wall_ratio = S(0)) {
+  using std::pow;
+  const S wall_factor = detail::khan_richardson_wall_factor(S(wall_ratio));
+  FLUIDBED_EXPECTS(!(archimedes < S(0)) && !(wall_ratio < S(0)) && wall_factor > S(0));
+  return 2.4 + 2.4 / (1.0 + 0.043 * pow(archimedes, 0.57) * wall_factor);
+}
+
+// Garside, J., Al-Dibouni, M.R. (1977), "Velocity-voidage relationships for
+// fluidization and sedimentation in solid-liquid systems", Ind. Eng. Chem. Process Des.
+// Dev. 16, 206–214, doi:10.1021/i260062a008:
+//
+//   (5.1 − n)/(n − 2.7) = 0.1 Re_t^0.9,   i.e. n = 2.7 + 2.4/(1 + 0.1 Re_t^0.9);
+//
+// limits 5.1 and 2.7. Precondition: Re_t >= 0.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_garside_al_dibouni(const S& terminal_reynolds) {
+  using std::pow;
+  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
+  return 2.7 + 2.4 / (1.0 + 0.1 * pow(terminal_reynolds, 0.9));
+}
+
+// ----------------------------------------------------------------------------- the law
+
+// u_s = u_t ε^n (seed 000 eq. 3.22). Preconditions: u_t >= 0, ε ∈ (0, 1], n > 0.
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_velocity(const S& terminal_velocity, const std::type_identity_t<S>& voidage,
+                                               const std::type_identity_t<S>& exponent) {
+  using std::pow;
+  FLUIDBED_EXPECTS(voidage > S(0) && voidage <= S(1) && exponent > S(0));
+  return terminal_velocity * pow(voidage, exponent);
+}
+
+// ε = (u_s/u_t)^(1/n), the inverse of eq. 3.22. Preconditions: 0 < u_s <= u_t, n > 0
+// (u_s > u_t would give ε > 1: the particles are carried out, there is no bed).
+template <class S>
+FLUIDBED_HOST_DEVICE S richardson_zaki_voidage(const S& superficial_velocity,
+                                              const std::type_identity_t<S>& terminal_velocity,
+                                              const std::type_identity_t<S>& exponent) {
+  using std::pow;
+  FLUIDBED_EXPECTS(superficial_velocity > S(0) && superficial_velocity <= terminal_velocity && exponent > S(0));
+  return pow(superficial_velocity / terminal_velocity, 1.0 / exponent);
+}
+
+// The terminal Reynolds number Re_t for which Richardson–Zaki with the exponent of
+// eq. 3.24 puts a bed fluidized at the superficial Reynolds number Re = ρ_f u_s d/μ_f at
+// the voidage ε:  Re = Re_t ε^n(Re_t)  (seed 000 §3.4.4.1, the procedure behind
+// Figs 3.1–3.5; the same relation defines Re* of eq. 3.53).
+// Solved for x = ln Re_t with Boost.Math toms748: g(x) = x + n(eˣ) ln ε − ln Re has
+// g' = 1 + Re_t n'(Re_t) ln ε >= 1, so the root is unique, and 2.4 < n < 4.8 brackets
+// it in [ln Re − 2.4 ln ε, ln Re − 4.8 ln ε]. Re_t = Re at ε = 1 and Re_t = 0 at Re = 0.
+// Preconditions: Re >= 0 finite, ε ∈ (0, 1].
+template <class T>
+T richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage) {
+  using std::exp;
+  using std::log;
+  FLUIDBED_EXPECTS(!(reynolds < T(0)) && voidage > T(0) && voidage <= T(1));
+  if (voidage == T(1) || reynolds == T(0)) return reynolds;
+  const T log_voidage = log(voidage);
+  const T log_re = log(reynolds);
+  const auto g = [&](const T& x) { return x + richardson_zaki_exponent_mazzei(T(exp(x))) * log_voidage - log_re; };
+  const T lo = log_re - T(2.4) * log_voidage;
+  const T hi = log_re - T(4.8) * log_voidage;
+  std::uintmax_t iterations = 200;
+  const auto root =
+      boost::math::tools::toms748_solve(g, lo, hi, g(lo), g(hi), boost::math::tools::eps_tolerance<T>(), iterations);
+  return exp((root.first + root.second) / 2);
+}
+
+// ----------------------------------------------------------------------------- checked
+
+template <class T>
+T richardson_zaki_exponent_mazzei_checked(const T& terminal_reynolds) {
+  require_non_negative("richardson_zaki_exponent_mazzei", "terminal_reynolds", terminal_reynolds);
+  return richardson_zaki_exponent_mazzei(terminal_reynolds);
+}
+
+template <class T>
+T richardson_zaki_exponent_mazzei_derivative_checked(const T& terminal_reynolds) {
+  require_non_negative("richardson_zaki_exponent_mazzei_derivative", "terminal_reynolds", terminal_reynolds);
+  return richardson_zaki_exponent_mazzei_derivative(terminal_reynolds);
+}
+
+template <class T>
+T richardson_zaki_exponent_1954_checked(const T& terminal_reynolds, const std::type_identity_t<T>& wall_ratio = T(0)) {
+  require_non_negative("richardson_zaki_exponent_1954", "terminal_reynolds", terminal_reynolds);
+  detail::require_wall_ratio("richardson_zaki_exponent_1954", wall_ratio);
+  return richardson_zaki_exponent_1954(terminal_reynolds, wall_ratio);
+}
+
+template <class T>
+T richardson_zaki_exponent_rowe_checked(const T& terminal_reynolds) {
+  require_non_negative("richardson_zaki_exponent_rowe", "terminal_reynolds", terminal_reynolds);
+  return richardson_zaki_exponent_rowe(terminal_reynolds);
+}
+
+template <class T>
+T richardson_zaki_exponent_khan_richardson_checked(const T& archimedes,
+                                                   const std::type_identity_t<T>& wall_ratio = T(0)) {
+  constexpr std::string_view function = "richardson_zaki_exponent_khan_richardson";
+  require_non_negative(function, "archimedes", archimedes);
+  require_non_negative(function, "wall_ratio", wall_ratio);
+  if (!(detail::khan_richardson_wall_factor(T(wall_ratio)) > T(0)))
+    fluidbed::detail::throw_domain_error(function, "wall_ratio", wall_ratio,
+                                         "must be < (1/2.4)^(1/0.27) = 0.0391, where 1 - 2.4 (d/D)^0.27 > 0");
+  return richardson_zaki_exponent_khan_richardson(archimedes, wall_ratio);
+}
+
+template <class T>
+T richardson_zaki_exponent_garside_al_dibouni_checked(const T& terminal_reynolds) {
+  require_non_negative("richardson_zaki_exponent_garside_al_dibouni", "terminal_reynolds", terminal_reynolds);
+  return richardson_zaki_exponent_garside_al_dibouni(terminal_reynolds);
+}
+
+template <class T>
+T richardson_zaki_velocity_checked(const T& terminal_velocity, const std::type_identity_t<T>& voidage,
+                                   const std::type_identity_t<T>& exponent) {
+  require_non_negative("richardson_zaki_velocity", "terminal_velocity", terminal_velocity);
+  require_in_half_open("richardson_zaki_velocity", "voidage", voidage, T(0), T(1));
+  require_positive("richardson_zaki_velocity", "exponent", exponent);
+  return richardson_zaki_velocity(terminal_velocity, voidage, exponent);
+}
+
+template <class T>
+T richardson_zaki_voidage_checked(const T& superficial_velocity, const std::type_identity_t<T>& terminal_velocity,
+                                  const std::type_identity_t<T>& exponent) {
+  require_positive("richardson_zaki_voidage", "terminal_velocity", terminal_velocity);
+  require_in_half_open("richardson_zaki_voidage", "superficial_velocity", superficial_velocity, T(0),
+                       terminal_velocity);
+  require_positive("richardson_zaki_voidage", "exponent", exponent);
+  return richardson_zaki_voidage(superficial_velocity, terminal_velocity, exponent);
+}
+
+template <class T>
+T richardson_zaki_terminal_reynolds_checked(const T& reynolds, const T& voidage) {
+  require_non_negative("richardson_zaki_terminal_reynolds", "reynolds", reynolds);
+  require_in_half_open("richardson_zaki_terminal_reynolds", "voidage", voidage, T(0), T(1));
+  return richardson_zaki_terminal_reynolds(reynolds, voidage);
+}
+
+}  // namespace fluidbed::settling
