@@ -54,6 +54,7 @@ TEST_CASE("every law is finite, non-negative, and positive below ε = 1, for eve
             CHECK(!std::isnan(d.d_voidage));
             CHECK(!std::isnan(d.d_slip));
             CHECK(std::isfinite(with.force_slip_derivative(b)));
+            if (eps < 1.0) CHECK(with.force_slip_derivative(b) > 0.0);  // more slip, more drag force
           }
         }
   }
