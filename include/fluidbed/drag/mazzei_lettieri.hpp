@@ -28,8 +28,8 @@ namespace fluidbed::drag {
 // assigns to the state; the relation is implicit because n_e depends on Re*. With
 // g(x) = x + n_e(eˣ) ln ε − ln Re, x = ln Re*, g' = 1 + Re* n_e'(Re*) ln ε ≥ 1 for ε ≤ 1,
 // so the root is unique, bracketed by Re ε^−2.4 ≤ Re* ≤ Re ε^−4.8 (note §6.3); it is
-// found by Newton's method in x from a one-step fixed-point seed (≤ 5 iterations, mean
-// 2.3, over ε ∈ [0.01, 1], Re ∈ [1e-8, 5e8]).
+// found by Halley's method in x (settling::richardson_zaki_terminal_reynolds, which
+// solves the same relation for Re_t).
 //
 // Evaluated form. Because C_D(Re) Re φ_ML = C_D(Re*) Re* ε^(2 − n_e), eq. 3.65 equals
 //   β_classical = ¾ μ_f (1 − ε)/d² · (0.63 √Re* + 4.8)² · ε^(1 − n_e(Re*)),
@@ -54,18 +54,17 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S effective_reynolds(const S& voidage, const S& re) {
     using T = std::remove_cvref_t<decltype(value_of(re))>;
-    const T re_value = value_of(re);
     using std::pow;
+    const T re_value = value_of(re);
     if (!(re_value > T(0))) return re * pow(voidage, -4.8);  // Re* = Re ε^−4.8 as Re → 0
-    const T log_re_star = solve(T(value_of(voidage)), re_value).log_re_star;
+    const T re_star = settling::richardson_zaki_terminal_reynolds(re_value, T(value_of(voidage)));
     if constexpr (std::is_same_v<S, T>) {
-      using std::exp;
-      return exp(log_re_star);
+      return re_star;
     } else {
       static_assert(is_dual<S>::value, "Re* derivatives are propagated through fluidbed::Dual");
       using std::exp;
       using std::log;
-      const T re_star = exp(log_re_star);
+      const T log_re_star = log(re_star);
       const T slope = T(1) + re_star * settling::richardson_zaki_exponent_mazzei_derivative(re_star) *
                                  T(log(value_of(voidage)));
       const S residual = log_re_star + settling::richardson_zaki_exponent_mazzei(re_star) * log(voidage) - log(re);
@@ -112,8 +111,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
         // The hot path. With E = ε^(−n_e/2): √Re* = √Re E (eq. 3.53) and ε^(1 − n_e) = ε E²,
         // so β = ¾ μ_f (1 − ε) ε (0.63 √Re E² + 4.8 E)² / d² costs one exp after the solve.
         using std::sqrt;
-        const Solution<T> r = solve(voidage, re);
-        const T e = exp(T(-0.5) * exponent_of_scaled_power(r.scaled_power) * r.log_voidage);
+        const auto r = settling::detail::solve_terminal_reynolds(re, voidage);
+        const T e = exp(T(-0.5) * settling::detail::exponent_of_scaled_power(r.scaled_power) * r.log_voidage);
         const T root = (T(0.63) * sqrt(re) * e + T(4.8)) * e;
         return prefactor * (T(1) - voidage) * voidage * root * root;
       }
@@ -126,57 +125,6 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
       if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
     return beta;
-  }
-
- private:
-  // The converged implicit relation: ln Re*, y = 0.175 Re*^¾ (so n_e = 2.4 + 2.4/(1 + y),
-  // eq. 3.24) and ln ε, which is all the value path needs.
-  template <class T>
-  struct Solution {
-    T log_re_star, scaled_power, log_voidage;
-  };
-
-  // Halley's method on g(x) = x + n_e(eˣ) ln ε − ln Re, x = ln Re*, from the middle of
-  // the bracket (n_e = 3.6). With y = 0.175 e^(0.75x), p = 1 + y, L = ln ε (note §6.3):
-  //   g = G/p,  G = (x + 2.4 L − ln Re) p + 2.4 L
-  //   g' = S₁/p²,  S₁ = p² − 1.8 y L  (≥ p², so g' ≥ 1)
-  //   g'' = S₂/p³,  S₂ = −1.35 L y (1 − y)
-  // and the Halley step 2 g g'/(2 g'² − g g'') = 2 G S₁ p/(2 S₁² − G S₂): one exp and one
-  // division per step. Convergence is cubic: a step of size s leaves an error below
-  // 0.02 s³ on ε ∈ [0.01, 1], Re ∈ [1e-10, 1e10], hence the stop at s ≤ 4 ∛ε_machine;
-  // 2.3 steps on average over a fluidized bed's states, at most 4.
-  template <class T>
-  FLUIDBED_HOST_DEVICE static Solution<T> solve(const T& voidage, const T& re) {
-    using std::abs;
-    using std::cbrt;
-    using std::exp;
-    using std::log;
-    const T log_voidage = log(voidage);
-    const T log_re = log(re);
-    const T stop = T(4) * cbrt(std::numeric_limits<T>::epsilon());
-    T x = log_re - T(3.6) * log_voidage;
-    T y{};
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      y = T(0.175) * exp(T(0.75) * x);
-      const T p = T(1) + y;
-      const T g = (x + T(2.4) * log_voidage - log_re) * p + T(2.4) * log_voidage;
-      const T s1 = p * p - T(1.8) * y * log_voidage;
-      const T s2 = T(-1.35) * log_voidage * y * (T(1) - y);
-      const T step = T(2) * g * s1 * p / (T(2) * s1 * s1 - g * s2);
-      x -= step;
-      if (abs(step) <= stop) {
-        const T z = T(0.75) * step;
-        y *= T(1) - z + T(0.5) * z * z;  // y at the updated x, to O(step³) ~ ε_machine
-        break;
-      }
-    }
-    return {x, y, log_voidage};
-  }
-
-  // Eq. 3.24 written in y = 0.175 Re*^¾ (settling::richardson_zaki_exponent_mazzei in Re*).
-  template <class S>
-  FLUIDBED_HOST_DEVICE static S exponent_of_scaled_power(const S& y) {
-    return 2.4 + 2.4 / (1.0 + y);
   }
 };
 
