@@ -2,3 +2,4 @@
 #pragma once
 
 #include "drag/any_drag_law.hpp"
+#include "settling.hpp"
