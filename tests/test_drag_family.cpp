@@ -27,8 +27,10 @@ DragState<double> state(double voidage, double slip, const Fluid<double>& fluid 
 const std::vector<double> voidages{1e-3, 0.05, 0.2, 0.35, 0.4, 0.5, 0.6, 0.7, 0.79, 0.81, 0.9, 0.99, 1.0 - 1e-9, 1.0};
 const std::vector<double> slips{0.0, 1e-12, 1e-6, 1e-3, 0.05, 0.5, 2.0, 30.0, 1e3};
 
+// Voidages where a law as published is discontinuous or has a kink (documented in its header).
 bool is_switch_point(std::string_view law, double voidage) {
-  return (law.starts_with("Gidaspow") && voidage == 0.8) || (law == "SyamlalOBrien" && voidage == 0.85);
+  return (law.starts_with("Gidaspow") && voidage == 0.8) || (law == "SyamlalOBrien" && voidage == 0.85) ||
+         (law == "KochHill" && (voidage == 0.6 || voidage == 0.9));
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // Every law shares one calling shape (drag_law.hpp), so a host can pick one at compile
 // time (use the type) or at run time: AnyDragLaw is a std::variant of the family, and
 // make_drag_law(name) returns the law of that name (the names are those of `name()`).
+// The polydisperse Beetstra law (beetstra.hpp) takes a mixture, not one state, and so
+// is not a member of this monodisperse family.
 #pragma once
 
 #include <array>
@@ -12,17 +14,23 @@
 #include <string_view>
 #include <variant>
 
+#include "beetstra.hpp"
 #include "constant_exponent.hpp"
 #include "di_felice.hpp"
 #include "drag_law.hpp"
 #include "ergun.hpp"
 #include "gidaspow.hpp"
+#include "koch_hill.hpp"
 #include "mazzei_lettieri.hpp"
+#include "syamlal_obrien.hpp"
+#include "tang.hpp"
+#include "tenneti.hpp"
 
 namespace fluidbed::drag {
 
 using AnyDragLaw = std::variant<Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
-                                DiFelice<DallavalleCoefficient>, DiFelice<SchillerNaumannCoefficient>, MazzeiLettieri>;
+                                DiFelice<DallavalleCoefficient>, DiFelice<SchillerNaumannCoefficient>, MazzeiLettieri,
+                                VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
 
 // One instance of every law of the family, each preset included.
 inline constexpr std::array all_drag_laws{
@@ -36,6 +44,12 @@ inline constexpr std::array all_drag_laws{
     AnyDragLaw{DiFelice<DallavalleCoefficient>{}},
     AnyDragLaw{DiFelice<SchillerNaumannCoefficient>{}},
     AnyDragLaw{MazzeiLettieri{}},
+    AnyDragLaw{VanDerHoef2005{}},
+    AnyDragLaw{Beetstra2007{}},
+    AnyDragLaw{Tang2015{}},
+    AnyDragLaw{Tenneti2011{}},
+    AnyDragLaw{KochHill{}},
+    AnyDragLaw{SyamlalOBrien{}},
 };
 
 inline std::string_view name_of(const AnyDragLaw& law) {
