@@ -10,7 +10,6 @@
 #include <doctest/doctest.h>
 
 #include <array>
-#include <boost/math/differentiation/autodiff.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
@@ -558,79 +557,4 @@ TEST_CASE("Beetstra polydisperse: derivatives (ε at fixed composition, species 
                     doctest::Contains("fluidbed::Beetstra2007Polydisperse"));
   const auto good = mixture({0.2, 0.2}, {5e-4, 1e-3});
   CHECK(law.checked(species_state(good, 1, 0.1)).classical() == law(species_state(good, 1, 0.1)).classical());
-}
-
-// ------------------------------------------------------------------------ all six laws
-TEST_CASE_TEMPLATE("dense laws: finite, positive below ε = 1, NaN-free derivatives at w = 0 and ε = 1", Law,
-                   VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien) {
-  const Law law;
-  for (const Fluid<double>& fluid : {air, water})
-    for (double eps : {1e-3, 0.05, 0.2, 0.35, 0.4, 0.5, 0.6, 0.7, 0.85, 0.9, 0.99, 0.995, 1.0 - 1e-9, 1.0 - 1e-15, 1.0})
-      for (double w : {0.0, 1e-12, 1e-6, 1e-3, 0.05, 0.5, 2.0, 30.0, 1e3}) {
-        const auto s = state(eps, w, fluid);
-        const auto beta = law(s);
-        const auto with = law.with_derivatives(s);
-        INFO(law.name() << " eps=" << eps << " w=" << w);
-        CHECK(std::isfinite(beta.classical()));
-        if (eps < 1.0)
-          CHECK(beta.classical() > 0.0);
-        else
-          CHECK(beta.pressure_gradient() == 0.0);
-        CHECK(beta.pressure_gradient() == doctest::Approx(eps * beta.classical()).epsilon(1e-15));
-        for (Buoyancy b : {Buoyancy::classical, Buoyancy::pressure_gradient}) {
-          CHECK(with.in(b).value == beta.in(b));
-          CHECK(!std::isnan(with.in(b).d_voidage));
-          CHECK(!std::isnan(with.in(b).d_slip));
-          CHECK(std::isfinite(with.force_slip_derivative(b)));
-        }
-        // ∂β/∂ε is finite even at ε = 1, where the √φ-type terms have infinite slopes.
-        CHECK(std::isfinite(with.pressure_gradient().d_voidage));
-      }
-  CHECK_THROWS_WITH_AS(law.checked(state(0.0, 0.1)), doctest::Contains("'voidage' = 0"), std::domain_error);
-  CHECK(law.within_validity(state(0.6, 0.01)));
-  CHECK(!law.within_validity(state(0.2, 0.01)));
-  CHECK(!law.reference().empty());
-}
-
-TEST_CASE_TEMPLATE("dense laws: derivatives equal central finite differences and Boost.Math autodiff", Law,
-                   VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien) {
-  using boost::math::differentiation::make_fvar;
-  using F = boost::math::differentiation::autodiff_fvar<double, 1>;
-  const Law law;
-  const double h = 1e-6;
-  for (const Fluid<double>& fluid : {air, water})
-    for (double eps : {0.42, 0.55, 0.68, 0.8, 0.93, 0.995})
-      for (double w : {1e-3, 0.03, 0.4, 3.0}) {
-        const double re = particle_reynolds(fluid, diameter, eps, w);
-        if (std::abs(re / 1000.0 - 1.0) < 0.01) continue;  // Tang's Re = 1000 kink
-        if (std::abs(0.5 * re / KochHill::transition_reynolds(1.0 - eps) - 1.0) < 0.01) continue;  // Koch–Hill Re_T
-        const auto f = [&](double e, double s) { return law(state(e, s, fluid)).classical(); };
-        const auto d = law.with_derivatives(state(eps, w, fluid)).classical();
-        const double fd_eps = (f(eps * (1 + h), w) - f(eps * (1 - h), w)) / (2 * h * eps);
-        const double fd_w = (f(eps, w * (1 + h)) - f(eps, w * (1 - h))) / (2 * h * w);
-        INFO(law.name() << " eps=" << eps << " w=" << w);
-        CHECK(d.d_voidage == doctest::Approx(fd_eps).epsilon(1e-6).scale(d.value));
-        CHECK(d.d_slip * w == doctest::Approx(fd_w * w).epsilon(1e-6).scale(d.value));
-        // An independent AD implementation, on the native kernel (pressure-gradient convention).
-        const F by_slip = law.native_beta(F(eps), make_fvar<double, 1>(w), fluid, diameter);
-        const auto native = law.with_derivatives(state(eps, w, fluid)).pressure_gradient();
-        CHECK(native.value == doctest::Approx(by_slip.derivative(0)).epsilon(1e-14));
-        CHECK(native.d_slip == doctest::Approx(by_slip.derivative(1)).epsilon(1e-12));
-        const F by_eps = law.native_beta(make_fvar<double, 1>(eps), F(w), fluid, diameter);
-        CHECK(native.d_voidage == doctest::Approx(by_eps.derivative(1)).epsilon(1e-12));
-      }
-}
-
-TEST_CASE_TEMPLATE("dense laws: float and long double evaluate the same law", Law, VanDerHoef2005, Beetstra2007,
-                   Tang2015, Tenneti2011, KochHill, SyamlalOBrien) {
-  const Law law;
-  for (double eps : {0.45, 0.7, 0.95})
-    for (double w : {0.0, 0.2, 5.0}) {
-      const double reference = law(state(eps, w)).classical();
-      const DragState<float> sf{static_cast<float>(eps), static_cast<float>(w), {1.2f, 1.8e-5f}, 5e-4f};
-      const DragState<long double> sl{eps, w, {1.2L, 1.8e-5L}, 5e-4L};
-      INFO(law.name() << " eps=" << eps << " w=" << w);
-      CHECK(static_cast<double>(law(sf).classical()) == doctest::Approx(reference).epsilon(1e-4));
-      CHECK(static_cast<double>(law(sl).classical()) == doctest::Approx(reference).epsilon(1e-13));
-    }
 }

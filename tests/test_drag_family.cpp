@@ -24,7 +24,8 @@ DragState<double> state(double voidage, double slip, const Fluid<double>& fluid 
   return {.voidage = voidage, .slip = slip, .fluid = fluid, .diameter = diameter};
 }
 
-const std::vector<double> voidages{1e-3, 0.05, 0.2, 0.35, 0.4, 0.5, 0.6, 0.7, 0.79, 0.81, 0.9, 0.99, 1.0 - 1e-9, 1.0};
+const std::vector<double> voidages{1e-3, 0.05, 0.2,  0.35,  0.4,        0.5,         0.6, 0.7, 0.79,
+                                   0.81, 0.85, 0.9, 0.99, 0.995, 1.0 - 1e-9, 1.0 - 1e-15, 1.0};
 const std::vector<double> slips{0.0, 1e-12, 1e-6, 1e-3, 0.05, 0.5, 2.0, 30.0, 1e3};
 
 // Voidages where a law as published is discontinuous or has a kink (documented in its header).
@@ -53,7 +54,7 @@ TEST_CASE("every law is finite, non-negative, and positive below ε = 1, for eve
           for (Buoyancy b : {Buoyancy::classical, Buoyancy::pressure_gradient}) {
             const DragDerivatives<double> d = with.in(b);
             CHECK(d.value == beta.in(b));
-            CHECK(!std::isnan(d.d_voidage));
+            CHECK(std::isfinite(d.d_voidage));  // even at ε = 1, where √φ-type terms have infinite slopes
             CHECK(!std::isnan(d.d_slip));
             CHECK(std::isfinite(with.force_slip_derivative(b)));
             if (eps < 1.0) CHECK(with.force_slip_derivative(b) > 0.0);  // more slip, more drag force
@@ -256,4 +257,39 @@ TEST_CASE("Di Felice: χ minimum 3.05 (α_d = 2.05) exactly at Re = 10^1.5, 3.7 
   CHECK(Law::exponent(28.0) - 1.0 == doctest::Approx(2.05091).epsilon(1e-5));
   CHECK(Law::exponent(1.0) - 1.0 == doctest::Approx(2.488976).epsilon(1e-6));
   CHECK(Law::exponent(1000.0) == doctest::Approx(Law::exponent(1.0)).epsilon(1e-14));
+}
+
+TEST_CASE("every law evaluates in float and long double, agreeing with double") {
+  for (const AnyDragLaw& law : all_drag_laws)
+    std::visit(
+        [](const auto& l) {
+          for (double eps : {0.45, 0.7, 0.95})
+            for (double w : {0.0, 0.01, 0.2, 5.0}) {
+              const double reference = l(state(eps, w)).classical();
+              const DragState<float> sf{float(eps), float(w), {1.2f, 1.8e-5f}, 5e-4f};
+              const DragState<long double> sl{eps, w, {1.2L, 1.8e-5L}, 5e-4L};
+              INFO(l.name() << " eps=" << eps << " w=" << w);
+              CHECK(double(l(sf).classical()) == doctest::Approx(reference).epsilon(1e-4));
+              CHECK(double(l(sl).classical()) == doctest::Approx(reference).epsilon(1e-13));
+            }
+        },
+        law);
+}
+
+TEST_CASE("every law states a reference and a validity range that contains states and excludes others") {
+  for (const AnyDragLaw& law : all_drag_laws)
+    std::visit(
+        [](const auto& l) {
+          const ValidityRange v = l.validity();
+          INFO(l.name());
+          CHECK(!l.reference().empty());
+          CHECK(v.voidage_min < v.voidage_max);
+          CHECK(v.reynolds_min < v.reynolds_max);
+          const double eps = 0.5 * (v.voidage_min + v.voidage_max);
+          const double re = v.reynolds_max < 1e300 ? 0.5 * (v.reynolds_min + v.reynolds_max) : 10.0;
+          const double w = re * air.viscosity / (air.density * eps * 5e-4);
+          CHECK(l.within_validity(state(eps, w)));
+          if (v.voidage_min > 0.01) CHECK(!l.within_validity(state(0.5 * v.voidage_min, w)));
+        },
+        law);
 }

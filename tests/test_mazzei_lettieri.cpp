@@ -95,15 +95,3 @@ TEST_CASE("implicit derivative: d ln Re*/d ln Re = C = 1/(1 + Re* N ln ε) (seed
       CHECK(r.derivative[0] * re / re_star == doctest::Approx(c).epsilon(1e-13));
     }
 }
-
-TEST_CASE("the law evaluates in float and long double, agreeing with double") {
-  for (double eps : {0.45, 0.8})
-    for (double w : {0.0, 0.01, 0.3}) {
-      const double ref = ML{}(DragState<double>{eps, w, water, 2e-4}).classical();
-      const float f = ML{}(DragState<float>{float(eps), float(w), {998.0f, 1e-3f}, 2e-4f}).classical();
-      const long double l =
-          ML{}(DragState<long double>{eps, w, {998.0L, 1e-3L}, 2e-4L}).classical();
-      CHECK(f == doctest::Approx(ref).epsilon(1e-5));
-      CHECK(double(l) == doctest::Approx(ref).epsilon(1e-14));
-    }
-}
