@@ -113,21 +113,21 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const D
 }
 
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, const U& c) { return a + Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, U c) { return a + Dual<T, N>(T(c)); }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) + a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) + a; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, const U& c) { return a - Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, U c) { return a - Dual<T, N>(T(c)); }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) - a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) - a; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const U& c) { return a * Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, U c) { return a * Dual<T, N>(T(c)); }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) * a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) * a; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const U& c) { return a / Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) { return a / Dual<T, N>(T(c)); }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const U& c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
 
 // Comparisons look at the value only (branches of piecewise closures).
 template <class T, int N>
@@ -135,9 +135,9 @@ FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<
 template <class T, int N>
 FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value == b.value; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const U& c) { return a.value <=> T(c); }
+FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, U c) { return a.value <=> T(c); }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const U& c) { return a.value == T(c); }
+FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, U c) { return a.value == T(c); }
 
 // ----------------------------------------------------------------------------- functions
 template <class T, int N>
@@ -176,7 +176,7 @@ FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
 // x^p for a constant exponent. The slope p·x^(p-1) is formed directly (never
 // x^p·p/x), so x = 0 gives the right 0 or ∞.
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const U& p) {
+FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, U p) {
   using std::pow;
   const T exponent(p);
   const T slope = exponent == T(0) ? T(0) : exponent * T(pow(x.value, exponent - T(1)));
@@ -185,7 +185,7 @@ FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const U& p) {
 
 // a^y for a constant base a > 0 (or a = 0 with y > 0).
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE Dual<T, N> pow(const U& a, const Dual<T, N>& y) {
+FLUIDBED_HOST_DEVICE Dual<T, N> pow(U a, const Dual<T, N>& y) {
   using std::log;
   using std::pow;
   const T base(a);
