@@ -3,3 +3,4 @@
 
 #include "drag/any_drag_law.hpp"
 #include "settling.hpp"
+#include "moments.hpp"

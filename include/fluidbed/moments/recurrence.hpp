@@ -1,0 +1,253 @@
+// fluidbed — from moments to the three-term recurrence (the Jacobi matrix): Wheeler's
+// algorithm and Gordon's product-difference algorithm, with exact power-of-two scaling.
+//
+// Notation (seed 000 §5.7.2 and App. C; anchors-moments note §0):
+//   moments    m_k = ∫ x^k f(x) dx, k = 0 … 2n−1 (raw, dimensional, unnormalised)
+//   recurrence p_{k+1}(x) = (x − α_k) p_k(x) − β_k p_{k−1}(x), p_0 = 1, p_{−1} = 0
+//   Jacobi matrix J_n = tridiag(√β_k; α_k; √β_k); its eigenvalues are the n Gauss nodes
+//   and the weights are m_0 times the squared first components of its unit eigenvectors.
+//   Stieltjes coefficients ζ_k (seed 000's ς_k): ζ_1 = α_0, β_k = ζ_{2k−1} ζ_{2k},
+//   α_k = ζ_{2k} + ζ_{2k+1}. A moment set is realizable by a measure on [0, ∞) with n
+//   points of increase iff ζ_1 … ζ_{2n−1} > 0; on the whole line iff β_1 … β_{n−1} > 0.
+//
+// Scale invariance. Both algorithms run on moments scaled by exact powers of two:
+//   m̃_k = m_k / (2^a 2^(k b)),  2^a ≈ m_0,  2^b ≈ m_1/m_0 (or √(m_2/m_0) for zero mean),
+// and the outputs are unscaled exactly (α·2^b, β·2^(2b), m_0·2^a). Scaling by a power of
+// two changes no mantissa bit, so the same distribution in metres and in micrometres gives
+// the same recurrence to the last bits, and every threshold is relative by construction.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "../core/config.hpp"
+
+namespace fluidbed::moments {
+
+// The support a moment set is tested against.
+enum class Support {
+  positive_half_line,  // [0, ∞): sizes, masses (Stieltjes problem); needs every ζ_k > 0
+  real_line,           // (−∞, ∞): velocities (Hamburger problem); needs every β_k > 0
+};
+
+// Exact power-of-two scales of a moment set: m_k = 2^(weight_exponent + k·length_exponent) m̃_k.
+struct MomentScaling {
+  int weight_exponent = 0;
+  int length_exponent = 0;
+};
+
+// Recurrence coefficients of the first `size` nodes (size <= N), in the caller's units.
+// beta[0] holds m_0 (Gautschi's convention), so beta[0..size−1] and alpha[0..size−1] are
+// the whole Jacobi matrix plus the total weight. Entries beyond `size` are diagnostics of
+// an early stop (see the algorithms), not part of the matrix.
+template <class T, int N>
+struct Recurrence {
+  std::array<T, N> alpha{};
+  std::array<T, N> beta{};
+  int size = 0;
+};
+
+namespace detail {
+
+// The nearest integer to log2(x) for x > 0 finite, via frexp (exact, any T).
+template <class T>
+FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
+  using std::frexp;
+  int e = 0;
+  const T f = frexp(x, &e);  // x = f 2^e, f in [0.5, 1)
+  return f < T(0.70710678118654752440) ? e - 1 : e;
+}
+
+}  // namespace detail
+
+// The scaling that brings m_0 and the length scale of the set to O(1). The length scale is
+// m_1/m_0 when positive, else √(m_2/m_0) (zero-mean sets), else 1. Preconditions: m has at
+// least 1 element and m_0 > 0 finite (the callers check; see inversion.hpp).
+template <class T>
+FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
+  using std::abs;
+  using std::isfinite;
+  MomentScaling s;
+  s.weight_exponent = detail::nearest_power_of_two_exponent(m[0]);
+  if (m.size() > 1) {
+    const T mean = m[1] / m[0];
+    if (mean > T(0) && isfinite(mean)) {
+      s.length_exponent = detail::nearest_power_of_two_exponent(mean);
+    } else if (m.size() > 2) {
+      const T second = m[2] / m[0];
+      if (second > T(0) && isfinite(second)) s.length_exponent = (detail::nearest_power_of_two_exponent(second) + 1) / 2;
+    }
+  }
+  return s;
+}
+
+// m̃_k = m_k 2^−(a + k b), exactly.
+template <class T>
+FLUIDBED_HOST_DEVICE void scale_moments(std::span<const T> m, MomentScaling s, std::span<T> scaled) {
+  using std::ldexp;
+  for (std::size_t k = 0; k < m.size(); ++k)
+    scaled[k] = ldexp(m[k], -(s.weight_exponent + int(k) * s.length_exponent));
+}
+
+// Undoes scale_moments on a recurrence: α·2^b, β_k·2^(2b) (k >= 1), β_0 = m_0·2^a.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE void unscale(Recurrence<T, N>& r, MomentScaling s) {
+  using std::ldexp;
+  for (int k = 0; k < r.size; ++k) {
+    r.alpha[k] = ldexp(r.alpha[k], s.length_exponent);
+    r.beta[k] = ldexp(r.beta[k], k == 0 ? s.weight_exponent : 2 * s.length_exponent);
+  }
+}
+
+// Wheeler (1974), Rocky Mountain J. Math. 4, 287–296, doi:10.1216/RMJ-1974-4-2-287, with
+// ordinary moments (the modified-moment coefficients zero); seed 003 ref. 43, written out in
+// the seeds' note §2.3:
+//   σ_{−1,l} = 0, σ_{0,l} = m_l;  a_0 = m_1/m_0
+//   σ_{k,l} = σ_{k−1,l+1} − a_{k−1} σ_{k−1,l} − b_{k−1} σ_{k−2,l},  l = k … 2n−k−1
+//   a_k = σ_{k,k+1}/σ_{k,k} − σ_{k−1,k}/σ_{k−1,k−1},  b_k = σ_{k,k}/σ_{k−1,k−1}
+// Computes the first n = m.size()/2 (<= N) levels on the moments as given (no scaling; see
+// recurrence() for the scaled entry point). Stops early at the first k with b_k <= 0 or not
+// finite (the set is not realizable on the real line beyond k nodes): result.size = k, and
+// beta[k] holds that b_k.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Recurrence<T, N> wheeler_unscaled(std::span<const T> m) {
+  using std::isfinite;
+  const int n = int(m.size() / 2);
+  FLUIDBED_EXPECTS(n >= 1 && n <= N);
+  Recurrence<T, N> r;
+  constexpr int L = 2 * N;
+  T previous[L]{};  // σ_{k−2,·}
+  T current[L]{};   // σ_{k−1,·}
+  for (int l = 0; l < 2 * n; ++l) current[l] = m[l];
+  r.beta[0] = m[0];
+  r.alpha[0] = m[1] / m[0];
+  r.size = 1;
+  for (int k = 1; k < n; ++k) {
+    T next[L]{};
+    for (int l = k; l < 2 * n - k; ++l)
+      next[l] = current[l + 1] - r.alpha[k - 1] * current[l] - (k > 1 ? r.beta[k - 1] * previous[l] : T(0));
+    const T b = next[k] / current[k - 1];
+    r.beta[k] = b;  // kept even when it fails: beta[size] is then the failing value
+    if (!(b > T(0)) || !isfinite(b)) break;
+    r.alpha[k] = next[k + 1] / next[k] - current[k] / current[k - 1];
+    for (int l = 0; l < 2 * n; ++l) {
+      previous[l] = current[l];
+      current[l] = next[l];
+    }
+    r.size = k + 1;
+  }
+  return r;
+}
+
+// The Stieltjes coefficients ζ_1 … ζ_{2n−1} of a recurrence (ζ_1 = α_0, ζ_{2k} = β_k/ζ_{2k−1},
+// ζ_{2k+1} = α_k − ζ_{2k}); zeta[j−1] holds ζ_j. A zero ζ makes the following ones undefined
+// (±∞ or NaN): realizability tests stop at the first ζ <= 0.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrence<T, N>& r) {
+  std::array<T, 2 * N> zeta{};
+  if (r.size < 1) return zeta;
+  zeta[0] = r.alpha[0];
+  for (int k = 1; k < r.size; ++k) {
+    zeta[2 * k - 1] = r.beta[k] / zeta[2 * k - 2];
+    zeta[2 * k] = r.alpha[k] - zeta[2 * k - 1];
+  }
+  return zeta;
+}
+
+// Gordon's product-difference algorithm: Gordon (1968), J. Math. Phys. 9, 655–663,
+// doi:10.1063/1.1664624; McGraw (1997), Aerosol Sci. Technol. 27, 255–265,
+// doi:10.1080/02786829708965471; seed 000 eqs. 5.87–5.91 (note §2.2). Seed eq. 5.88 prints
+// "g_{p,2ν+1} = 0" for the last entry of the second column; it is g_{2ν+1,2} = 0 (the matrix
+// is (2ν+1)²; verified by the note's implementation). The first row of the matrix G gives
+//   ζ_k = g_{1,k+2} / (g_{1,k+1} g_{1,k}),  k = 1 … 2n−1,
+// then α_k = ζ_{2k} + ζ_{2k+1} (ζ_0 = 0) and β_k = ζ_{2k} ζ_{2k−1} (eq. 5.91; β without the
+// square root, which the Jacobi matrix takes).
+//
+// Why textbook PD fails, and the fix. The first-row entries are products of Hankel
+// determinants whose decimal exponents grow like Fibonacci numbers: in SI units (sizes
+// ~1e-4 m) they leave the double range from n = 5 (anchors note §5.2). Each column q is
+// therefore stored as c_q 2^(E_q) with c_q renormalised by an exact power of two r_q after it
+// is formed. Since column q is bilinear in columns q−1 and q−2, E_q = E_{q−1} + E_{q−2} + r_q,
+// and the ratio above needs only r_{k+2}: ζ_k = c_{1,k+2}/(c_{1,k+1} c_{1,k}) · 2^(r_{k+2}).
+// No exponent ever leaves the range, at any n, and the arithmetic is otherwise identical.
+// Only the last two columns are kept (O(n) storage, O(n²) work).
+//
+// PD divides by g_{1,k}; zero-mean sets (g_{1,3} = m_1 = 0) cannot be inverted by PD — use
+// Wheeler. The recurrence stops at the first ζ <= 0 or not finite (result.size = the nodes
+// realizable on [0, ∞)). Computes n = m.size()/2 (<= N) levels on the moments as given.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<const T> m,
+                                                                 std::array<T, 2 * N>* zeta_out = nullptr) {
+  using std::abs;
+  using std::frexp;
+  using std::isfinite;
+  using std::ldexp;
+  const int n = int(m.size() / 2);
+  FLUIDBED_EXPECTS(n >= 1 && n <= N);
+  constexpr int R = 2 * N + 1;
+  const int rows = 2 * n + 1;
+  T before[R]{};  // column q−2
+  T last[R]{};    // column q−1
+  before[0] = T(1);
+  for (int p = 0; p < 2 * n; ++p) last[p] = (p % 2 == 0) ? m[p] : T(-m[p]);
+  std::array<T, 2 * N> zeta{};
+  T first_row[3] = {before[0], last[0], T(0)};  // g_{1,k}, g_{1,k+1}, g_{1,k+2} (renormalised)
+  int realizable_zetas = 0;
+  for (int q = 3; q <= rows; ++q) {
+    T column[R]{};
+    T largest(0);
+    for (int p = 0; p <= rows - q; ++p) {
+      column[p] = last[0] * before[p + 1] - before[0] * last[p + 1];
+      if (abs(column[p]) > largest) largest = abs(column[p]);
+    }
+    int shift = 0;
+    if (largest > T(0) && isfinite(largest)) frexp(largest, &shift);
+    for (int p = 0; p <= rows - q; ++p) column[p] = ldexp(column[p], -shift);
+    first_row[2] = column[0];
+    const T z = ldexp(first_row[2] / (first_row[1] * first_row[0]), shift);  // ζ_{q−2}
+    if (!(z > T(0)) || !isfinite(z)) {
+      zeta[q - 3] = z;
+      break;
+    }
+    zeta[q - 3] = z;
+    realizable_zetas = q - 2;
+    first_row[0] = first_row[1];
+    first_row[1] = first_row[2];
+    for (int p = 0; p < R; ++p) {
+      before[p] = last[p];
+      last[p] = column[p];
+    }
+  }
+  if (zeta_out) *zeta_out = zeta;
+  // n nodes need ζ_1 … ζ_{2n−1}: keep floor((realizable + 1)/2) nodes.
+  Recurrence<T, N> r;
+  r.size = (realizable_zetas + 1) / 2;
+  r.beta[0] = m[0];
+  for (int k = 0; k < r.size; ++k) {
+    r.alpha[k] = (k == 0 ? T(0) : zeta[2 * k - 1]) + zeta[2 * k];
+    if (k > 0) r.beta[k] = zeta[2 * k - 1] * zeta[2 * k - 2];
+  }
+  return r;
+}
+
+// Which algorithm computes the recurrence.
+enum class RecurrenceAlgorithm { wheeler, product_difference };
+
+// The recurrence of the first n = m.size()/2 (<= N) nodes, computed on exactly scaled
+// moments and unscaled on output. Preconditions: m.size() >= 2 even, m_0 > 0 finite.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Recurrence<T, N> recurrence(std::span<const T> m,
+                                                 RecurrenceAlgorithm algorithm = RecurrenceAlgorithm::wheeler) {
+  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
+  const MomentScaling s = scaling_of(m);
+  T scaled[2 * N];
+  scale_moments(m, s, std::span<T>(scaled, m.size()));
+  const std::span<const T> view(scaled, m.size());
+  Recurrence<T, N> r = algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
+                                                                 : product_difference_unscaled<T, N>(view);
+  unscale(r, s);
+  return r;
+}
+
+}  // namespace fluidbed::moments
