@@ -174,8 +174,9 @@ FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrenc
 // Only the last two columns are kept (O(n) storage, O(n²) work).
 //
 // PD divides by g_{1,k}; zero-mean sets (g_{1,3} = m_1 = 0) cannot be inverted by PD — use
-// Wheeler. The recurrence stops at the first ζ <= 0 or not finite (result.size = the nodes
-// realizable on [0, ∞)). Computes n = m.size()/2 (<= N) levels on the moments as given.
+// Wheeler. The ζ are computed up to the first one <= 0 or not finite; the recurrence is
+// then built exactly as far as Wheeler's would go (see below). Computes n = m.size()/2
+// (<= N) levels on the moments as given.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<const T> m,
                                                                  std::array<T, 2 * N>* zeta_out = nullptr) {
@@ -193,7 +194,7 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   for (int p = 0; p < 2 * n; ++p) last[p] = (p % 2 == 0) ? m[p] : T(-m[p]);
   std::array<T, 2 * N> zeta{};
   T first_row[3] = {before[0], last[0], T(0)};  // g_{1,k}, g_{1,k+1}, g_{1,k+2} (renormalised)
-  int realizable_zetas = 0;
+  int computed = 0;  // ζ_1 … ζ_computed, the last one possibly the failing one
   for (int q = 3; q <= rows; ++q) {
     T column[R]{};
     T largest(0);
@@ -206,12 +207,9 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
     for (int p = 0; p <= rows - q; ++p) column[p] = ldexp(column[p], -shift);
     first_row[2] = column[0];
     const T z = ldexp(first_row[2] / (first_row[1] * first_row[0]), shift);  // ζ_{q−2}
-    if (!(z > T(0)) || !isfinite(z)) {
-      zeta[q - 3] = z;
-      break;
-    }
     zeta[q - 3] = z;
-    realizable_zetas = q - 2;
+    computed = q - 2;
+    if (!(z > T(0)) || !isfinite(z)) break;
     first_row[0] = first_row[1];
     first_row[1] = first_row[2];
     for (int p = 0; p < R; ++p) {
@@ -220,14 +218,20 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
     }
   }
   if (zeta_out) *zeta_out = zeta;
-  // n nodes need ζ_1 … ζ_{2n−1}: keep floor((realizable + 1)/2) nodes.
+  // The recurrence, level by level, stopping where Wheeler's would: level k needs
+  // β_k = ζ_{2k−1} ζ_{2k} > 0 and α_k = ζ_{2k} + ζ_{2k+1}. A failing β_k is kept in beta[k]
+  // and a failing ζ_{2k+1} stays visible in α_k, for the realizability diagnostics.
   Recurrence<T, N> r;
-  r.size = (realizable_zetas + 1) / 2;
   r.beta[0] = m[0];
-  for (int k = 0; k < r.size; ++k) {
-    r.alpha[k] = (k == 0 ? T(0) : zeta[2 * k - 1]) + zeta[2 * k];
-    if (k > 0) r.beta[k] = zeta[2 * k - 1] * zeta[2 * k - 2];
+  r.alpha[0] = zeta[0];
+  r.size = computed >= 1 ? 1 : 0;
+  for (int k = 1; k < n && 2 * k + 1 <= computed; ++k) {
+    r.beta[k] = zeta[2 * k - 2] * zeta[2 * k - 1];
+    if (!(r.beta[k] > T(0)) || !isfinite(r.beta[k])) break;
+    r.alpha[k] = zeta[2 * k - 1] + zeta[2 * k];
+    r.size = k + 1;
   }
+  if (r.size < n && 2 * r.size <= computed) r.beta[r.size] = zeta[2 * r.size - 2] * zeta[2 * r.size - 1];
   return r;
 }
 

@@ -1,0 +1,221 @@
+// Moment inversion core: exact references, scale invariance, PD against Wheeler, statuses.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <boost/math/special_functions/gamma.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include "fluidbed/moments/inversion.hpp"
+
+using namespace fluidbed::moments;
+
+namespace {
+
+// Moments of a measure from exact recurrence ratios m_{k+1} = m_k · ratio(k), accumulated in
+// long double and rounded once to double (the moments of gamma/Laguerre-type measures).
+template <int Count, class Ratio>
+std::array<double, Count> moments_by_ratio(long double m0, Ratio ratio) {
+  std::array<double, Count> m{};
+  long double value = m0;
+  for (int k = 0; k < Count; ++k) {
+    m[k] = double(value);
+    value *= ratio(k);
+  }
+  return m;
+}
+
+constexpr RecurrenceAlgorithm algorithms[] = {RecurrenceAlgorithm::wheeler, RecurrenceAlgorithm::product_difference};
+
+std::string name(RecurrenceAlgorithm a) { return a == RecurrenceAlgorithm::wheeler ? "Wheeler" : "PD"; }
+
+}  // namespace
+
+TEST_CASE("three atoms: both algorithms give the note's recurrence and recover the atoms (seed note §7.1)") {
+  const std::array<double, 6> m{1, 2.7, 9.7, 41.7, 195.7, 953.7};
+  for (RecurrenceAlgorithm a : algorithms) {
+    INFO(name(a));
+    const auto r = recurrence<double, 3>(std::span<const double>(m), a);
+    REQUIRE(r.size == 3);
+    CHECK(r.alpha[1] == doctest::Approx(3.7356846473).epsilon(1e-10));
+    CHECK(r.alpha[2] == doctest::Approx(1.5643153527).epsilon(1e-10));
+    CHECK(r.beta[1] == doctest::Approx(2.41).epsilon(1e-14));
+    CHECK(r.beta[2] == doctest::Approx(0.743788846611).epsilon(1e-11));
+    const auto zeta = stieltjes_coefficients(r);
+    const double expected_zeta[] = {2.7, 0.892592592593, 2.84309205471, 0.261612649994, 1.3027027027};
+    for (int j = 0; j < 5; ++j) CHECK(zeta[j] == doctest::Approx(expected_zeta[j]).epsilon(1e-11));
+    const auto q = invert<3>(m, {.algorithm = a});
+    REQUIRE(q.status == InversionStatus::ok);
+    // The decimal moments are rounded to binary; that rounding alone moves the nodes by ~1e-13.
+    const double x[] = {1, 2, 5}, w[] = {0.2, 0.5, 0.3};
+    for (int i = 0; i < 3; ++i) {
+      CHECK(q.quadrature.nodes[i] == doctest::Approx(x[i]).epsilon(5e-13));
+      CHECK(q.quadrature.weights[i] == doctest::Approx(w[i]).epsilon(5e-13));
+    }
+  }
+}
+
+TEST_CASE("recurrences with exact closed forms: Laguerre (non-integer a), shifted Hermite, gamma in SI units") {
+  // Per-coefficient tolerance: the map moments → recurrence loses about a factor 10 per level
+  // for these measures (measured; Gautschi 2004 §2.1), from double-rounded moments.
+  const auto tolerance = [](int k) { return 4e-15 * std::pow(12.0, k); };
+  SUBCASE("generalized Laguerre x^a e^-x, a = 0.37: α_k = 2k + a + 1, β_k = k(k + a)") {
+    const double a = 0.37;
+    const auto m = moments_by_ratio<16>(std::tgamma(1.0L + a), [&](int k) { return (long double)(k) + 1.0L + a; });
+    for (RecurrenceAlgorithm alg : algorithms) {
+      const auto r = recurrence<double, 8>(std::span<const double>(m), alg);
+      REQUIRE(r.size == 8);
+      for (int k = 0; k < 8; ++k) {
+        INFO(name(alg) << " k=" << k);
+        CHECK(r.alpha[k] == doctest::Approx(2 * k + a + 1).epsilon(tolerance(k)));
+        if (k > 0) CHECK(r.beta[k] == doctest::Approx(k * (k + a)).epsilon(tolerance(k)));
+      }
+    }
+  }
+  SUBCASE("gamma(2.5, θ = 1e-4 m): α_k = θ(2k + 2.5), β_k = θ² k(k + 1.5), m_0 = 1") {
+    const long double theta = 1e-4L;
+    const auto m = moments_by_ratio<16>(1.0L, [&](int k) { return theta * ((long double)(k) + 2.5L); });
+    for (RecurrenceAlgorithm alg : algorithms) {
+      const auto r = recurrence<double, 8>(std::span<const double>(m), alg);
+      REQUIRE(r.size == 8);  // textbook PD underflows from n = 5 here (anchors note §5.2)
+      for (int k = 0; k < 8; ++k) {
+        INFO(name(alg) << " k=" << k);
+        CHECK(r.alpha[k] == doctest::Approx(1e-4 * (2 * k + 2.5)).epsilon(tolerance(k)));
+        if (k > 0) CHECK(r.beta[k] == doctest::Approx(1e-8 * k * (k + 1.5)).epsilon(tolerance(k)));
+      }
+    }
+  }
+  SUBCASE("normal, mean 5.3, σ = 0.7 (Wheeler; PD too, as the mean is not zero)") {
+    // m_{k+1} = μ m_k + k σ² m_{k−1}
+    std::array<long double, 12> exact{1.0L, 5.3L};
+    for (int k = 1; k < 11; ++k) exact[k + 1] = 5.3L * exact[k] + k * 0.49L * exact[k - 1];
+    std::array<double, 12> m{};
+    std::transform(exact.begin(), exact.end(), m.begin(), [](long double x) { return double(x); });
+    for (RecurrenceAlgorithm alg : algorithms) {
+      const auto r = recurrence<double, 6>(std::span<const double>(m), alg);
+      REQUIRE(r.size == 6);
+      for (int k = 0; k < 6; ++k) {
+        INFO(name(alg) << " k=" << k);
+        // A narrow measure far from 0 is the worst conditioned case (anchors note §5.2).
+        CHECK(r.alpha[k] == doctest::Approx(5.3).epsilon(1e-14 * std::pow(60.0, k)));
+        if (k > 0) CHECK(r.beta[k] == doctest::Approx(0.49 * k).epsilon(1e-14 * std::pow(60.0, k)));
+      }
+    }
+  }
+}
+
+TEST_CASE("Gauss–Legendre on [0, 1] from m_k = 1/(k+1) (exact rule, anchors note §9)") {
+  std::array<double, 10> m{};
+  for (int k = 0; k < 10; ++k) m[k] = 1.0 / (k + 1);
+  const double x[] = {0.046910077030668004, 0.23076534494715845, 0.5, 0.76923465505284155, 0.953089922969332};
+  const double w[] = {0.11846344252809454, 0.23931433524968323, 64.0 / 225, 0.23931433524968323, 0.11846344252809454};
+  for (RecurrenceAlgorithm alg : algorithms) {
+    const auto q = invert<5>(m, {.algorithm = alg});
+    REQUIRE(q.status == InversionStatus::ok);
+    for (int i = 0; i < 5; ++i) {
+      INFO(name(alg) << " i=" << i);
+      CHECK(q.quadrature.nodes[i] == doctest::Approx(x[i]).epsilon(2e-10));
+      CHECK(q.quadrature.weights[i] == doctest::Approx(w[i]).epsilon(2e-10));
+    }
+  }
+}
+
+TEST_CASE("scale invariance: a change of unit by a power of two gives bit-identical rescaled quadratures") {
+  // A lognormal volume distribution, d50 = 100 µm, σ_ln = 0.3, m_0 = 0.6, written in
+  // micrometres and in units of 2^-20 m ≈ 0.95 µm... any power-of-two unit change is exact.
+  std::array<double, 16> micrometres{};
+  for (int k = 0; k < 16; ++k) micrometres[k] = 0.6 * std::exp(k * std::log(100.0) + k * k * 0.09 / 2);
+  for (int shift : {-40, -20, -7, 3, 30})
+    for (int weight_shift : {-30, 0, 12}) {
+      std::array<double, 16> other{};
+      for (int k = 0; k < 16; ++k) other[k] = std::ldexp(micrometres[k], weight_shift + k * shift);
+      for (RecurrenceAlgorithm alg : algorithms) {
+        const auto a = invert<8>(micrometres, {.algorithm = alg});
+        const auto b = invert<8>(other, {.algorithm = alg});
+        INFO(name(alg) << " length shift 2^" << shift << " weight shift 2^" << weight_shift);
+        REQUIRE(a.status == b.status);
+        REQUIRE(a.quadrature.size == b.quadrature.size);
+        for (int i = 0; i < a.quadrature.size; ++i) {
+          CHECK(std::ldexp(a.quadrature.nodes[i], shift) == b.quadrature.nodes[i]);
+          CHECK(std::ldexp(a.quadrature.weights[i], weight_shift) == b.quadrature.weights[i]);
+        }
+      }
+    }
+}
+
+TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Dirac, zero mean on the real line") {
+  const auto check = [](const std::array<double, 4>& m, InversionStatus status, int size, Support support) {
+    const auto r = invert<2>(m, {.support = support});
+    CHECK(r.status == status);
+    CHECK(r.quadrature.size == size);
+    for (int i = 0; i < r.quadrature.size; ++i) {
+      CHECK(std::isfinite(r.quadrature.nodes[i]));
+      CHECK(std::isfinite(r.quadrature.weights[i]));
+    }
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const Support plus = Support::positive_half_line, line = Support::real_line;
+  check({0, 0, 0, 0}, InversionStatus::zero_mass, 0, plus);
+  check({0, 1e-9, 0, 0}, InversionStatus::not_realizable, 0, plus);
+  check({1, nan, 2, 3}, InversionStatus::invalid_input, 0, plus);
+  check({1, 2, inf, 3}, InversionStatus::invalid_input, 0, plus);
+  check({-1, 2, 4, 8}, InversionStatus::not_realizable, 0, plus);
+  check({1, -2, 4, -8}, InversionStatus::not_realizable, 0, plus);
+  check({1, -2, 4, -8}, InversionStatus::reduced, 1, line);  // a Dirac at −2 on the line
+  check({1, 1, 1, 1}, InversionStatus::reduced, 1, plus);
+  check({3.125e12, 6.25e6, 12.5, 2.5e-5}, InversionStatus::reduced, 1, plus);  // a Dirac at 2e-6 m (anchors §9)
+  check({1, 0, 1, 0}, InversionStatus::not_realizable, 0, plus);  // zero mean is not on (0, ∞)
+  check({1, 0, 1, 0}, InversionStatus::ok, 2, line);              // ±1, weights 1/2
+  const auto dirac = invert<2>(std::array<double, 4>{3.125e12, 6.25e6, 12.5, 2.5e-5});
+  CHECK(dirac.quadrature.nodes[0] == doctest::Approx(2e-6).epsilon(1e-15));
+  CHECK(dirac.quadrature.weights[0] == 3.125e12);
+  CHECK(dirac.first_failing_index == 2);  // ζ_2 = variance/mean = 0
+}
+
+TEST_CASE("the first failing Stieltjes coefficient is reported with its value (anchors note §1.7)") {
+  // Uniform [0, 1] moments with m_3 := 0: ζ = 1/2, 1/6, −8/3.
+  const std::array<double, 6> m{1, 0.5, 1.0 / 3, 0, 0.2, 1.0 / 6};
+  for (RecurrenceAlgorithm alg : algorithms) {
+    const auto r = invert<3>(m, {.algorithm = alg});
+    INFO(name(alg));
+    CHECK(r.status == InversionStatus::reduced);
+    CHECK(r.realizable_nodes == 1);
+    CHECK(r.first_failing_index == 3);
+    CHECK(r.failing_value == doctest::Approx(-8.0 / 3).epsilon(1e-14));
+    CHECK(r.quadrature.nodes[0] == 0.5);
+  }
+}
+
+TEST_CASE("the same code runs in long double and Boost.Multiprecision (50 digits)") {
+  using boost::multiprecision::cpp_bin_float_50;
+  using F = cpp_bin_float_50;
+  const F a = F(37) / 100;
+  std::array<F, 20> m{};
+  m[0] = boost::math::tgamma(a + 1);
+  for (int k = 1; k < 20; ++k) m[k] = m[k - 1] * (k + a);
+  for (RecurrenceAlgorithm alg : algorithms) {
+    const auto r = recurrence<F, 10>(std::span<const F>(m), alg);
+    REQUIRE(r.size == 10);
+    for (int k = 0; k < 10; ++k) {
+      INFO(name(alg) << " k=" << k);
+      CHECK(abs(r.alpha[k] / (2 * k + a + 1) - 1) < F(1e-35));
+      if (k > 0) CHECK(abs(r.beta[k] / (k * (k + a)) - 1) < F(1e-35));
+    }
+    const auto q = invert<10>(m, {.algorithm = alg});
+    REQUIRE(q.status == InversionStatus::ok);
+    F total = 0;
+    for (int i = 0; i < 10; ++i) total += q.quadrature.weights[i] * pow(q.quadrature.nodes[i], 19);
+    CHECK(abs(total / m[19] - 1) < F(1e-30));  // the rule reproduces the highest moment
+  }
+  // long double: Gauss–Legendre N = 5 nodes to long double precision
+  std::array<long double, 10> u{};
+  for (int k = 0; k < 10; ++k) u[k] = 1.0L / (k + 1);
+  const auto q = invert<5>(u);
+  CHECK(std::abs(q.quadrature.nodes[0] - 0.046910077030668003601186560850303517L) < 1e-14L);
+}
