@@ -10,6 +10,13 @@
 //      first eigenvector row (jacobi_eigen.hpp), in scaled units;
 //   6. unscale nodes and weights exactly.
 // Never NaN without a status, never an exception or abort: problems are returned as data.
+//
+// Node counts. invert<T, N>(span) takes any even number 2n <= 2N of moments: N is the
+// compile-time capacity (the storage), n the runtime node count. invert<N>(std::array) is
+// the fixed-n = N form. In double precision more than ~10–12 nodes are meaningless for
+// size distributions (the map from moments to nodes loses about a decade per node; see
+// tests/reference/moments_reference.py's conditioning), so a capacity of 10–16 serves every
+// runtime use.
 #pragma once
 
 #include <array>
