@@ -58,25 +58,15 @@ FLUIDBED_HOST_DEVICE void unscale(Quadrature<T, N>& q, MomentScaling s) {
 // Preconditions: m.size() even, 2 <= m.size() <= 2N. Everything else is a status.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const InversionOptions& options = {}) {
-  using std::isfinite;
   FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
   InversionResult<T, N> out;
   const int requested = int(m.size() / 2);
-  bool all_zero = true;
-  for (const T& x : m) {
-    if (!isfinite(x)) return out;  // invalid_input
-    all_zero = all_zero && x == T(0);
-  }
-  if (all_zero) {
-    out.status = InversionStatus::zero_mass;
+  out.status = detail::input_status(m);
+  if (out.status != InversionStatus::ok) {
+    if (out.status == InversionStatus::not_realizable) out.failing_value = m[0];
     return out;
   }
   out.status = InversionStatus::not_realizable;
-  if (!(m[0] > T(0))) {
-    out.first_failing_index = 0;
-    out.failing_value = m[0];
-    return out;
-  }
   const MomentScaling s = scaling_of(m);
   T scaled[2 * N];
   scale_moments(m, s, std::span<T>(scaled, m.size()));

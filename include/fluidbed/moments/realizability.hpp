@@ -6,10 +6,19 @@
 // Shohat & Tamarkin (1943), The Problem of Moments, AMS; seed 003 eq. 0.22). The signs are
 // read from the recurrence (recurrence.hpp), which is computed on exactly scaled moments, so
 // the test involves no absolute threshold and no units.
+//
+// Counting moments rather than nodes. ζ_j depends on m_0 … m_j only, so the longest
+// realizable prefix of the set is m_0 … m_{R−1} with R = the index of the first ζ_j <= 0
+// (R = all moments if none fails); on the real line β_k depends on m_0 … m_{2k}, and R = 2k
+// for the first β_k <= 0. R may be odd: m_0 … m_{2n} realizable on [0, ∞) is what a
+// Gauss–Radau rule with a node at 0 needs (adaptive.hpp). The Gauss rule uses ⌊R/2⌋ nodes.
+// This is the count OpenQBMM calls nRealizableMoments (anchors note §1.2), here with no
+// absolute threshold: the comparison is with 0 on exactly scaled moments.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "../core/config.hpp"
 #include "jacobi_eigen.hpp"
@@ -44,46 +53,264 @@ struct InversionResult {
 
 namespace detail {
 
+// The first failing coefficient of a recurrence computed to `levels` levels (r.size <= levels
+// passed Wheeler's β test) from `moment_count` moments, and the length R of the realizable
+// moment prefix. On [0, ∞) the ζ tested are ζ_1 … ζ_{2 size − 1}, plus ζ_{2 size} when the
+// recurrence stopped early (it holds the failing β_size), and never beyond ζ_{moment_count − 1}
+// (the last ζ of a padded recurrence depends on the padding). Everything in scaled units.
+template <class T, int N>
+struct CoefficientScan {
+  std::array<T, 2 * N> zeta{};  // zeta[j − 1] = ζ_j, j = 1 … zeta_count
+  int zeta_count = 0;
+  int realizable_moments = 0;   // R
+  int first_failing_index = 0;  // j (ζ_j) or k (β_k); 0 if none fails
+  T failing_value = T(0);
+};
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE CoefficientScan<T, N> scan_coefficients(const Recurrence<T, N>& r, int levels, int moment_count,
+                                                             Support support) {
+  using std::isfinite;
+  CoefficientScan<T, N> out;
+  out.zeta = stieltjes_coefficients(r);
+  out.zeta_count = r.size > 0 ? 2 * r.size - 1 : 0;
+  if (r.size > 0 && r.size < levels) {
+    out.zeta[2 * r.size - 1] = r.beta[r.size] / out.zeta[2 * r.size - 2];
+    out.zeta_count = 2 * r.size;
+  }
+  if (out.zeta_count > moment_count - 1) out.zeta_count = moment_count - 1;
+  out.realizable_moments = moment_count;
+  if (support == Support::positive_half_line) {
+    for (int j = 1; j <= out.zeta_count; ++j)
+      if (!(out.zeta[j - 1] > T(0)) || !isfinite(out.zeta[j - 1])) {
+        out.first_failing_index = j;
+        out.failing_value = out.zeta[j - 1];
+        out.realizable_moments = j;
+        break;
+      }
+  } else if (r.size < levels && 2 * r.size < moment_count) {
+    out.first_failing_index = r.size;
+    out.failing_value = r.beta[r.size];
+    out.realizable_moments = 2 * r.size;
+  }
+  return out;
+}
+
+// The relative boundary distance of a rule built from m_0 … m_{moments−1} (see
+// InversionResult): over ζ_2 … ζ_{moments−1} ([0, ∞)) or β_1 … β_{⌊(moments−1)/2⌋} (real line).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE T boundary_distance(const Recurrence<T, N>& r, const std::array<T, 2 * N>& zeta, int moments,
+                                         Support support) {
+  T distance(moments >= 2 ? 1 : 0);
+  if (support == Support::positive_half_line) {
+    for (int j = 2; j <= moments - 1; ++j)
+      if (zeta[j - 1] / zeta[0] < distance) distance = zeta[j - 1] / zeta[0];
+  } else {
+    const T second = r.beta[0] * (r.alpha[0] * r.alpha[0]) + (moments >= 3 ? r.beta[0] * r.beta[1] : T(0));
+    for (int k = 1; 2 * k <= moments - 1; ++k)
+      if (r.beta[k] * r.beta[0] / second < distance) distance = r.beta[k] * r.beta[0] / second;
+  }
+  return distance;
+}
+
+// The caller's-unit value of a failing coefficient: ζ scales like a length, β like its square.
+FLUIDBED_HOST_DEVICE inline int failing_value_exponent(Support support, MomentScaling s) {
+  return support == Support::positive_half_line ? s.length_exponent : 2 * s.length_exponent;
+}
+
 // Realizability of a scaled recurrence (r.size levels computed) on the support: trims
 // r.size to the realizable node count and fills the diagnostics.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE void assess(Recurrence<T, N>& r, int requested, Support support, MomentScaling s,
                                  InversionResult<T, N>& out) {
   using std::ldexp;
-  if (support == Support::positive_half_line) {
-    const std::array<T, 2 * N> zeta = stieltjes_coefficients(r);
-    // ζ_1 … ζ_{2 size − 1} exist; an early recurrence stop means ζ_{2 size} (= β_size/ζ_{2 size−1}) failed.
-    int failing = 0;
-    for (int j = 1; j <= 2 * r.size - 1; ++j)
-      if (!(zeta[j - 1] > T(0))) {
-        failing = j;
-        break;
-      }
-    if (failing == 0 && r.size < requested) {
-      failing = 2 * r.size;
-      out.failing_value = ldexp(r.beta[r.size] / zeta[2 * r.size - 2], s.length_exponent);
-    } else if (failing != 0) {
-      out.failing_value = ldexp(zeta[failing - 1], s.length_exponent);
-    }
-    if (failing != 0) r.size = failing / 2;
-    out.first_failing_index = failing;
-    T distance(r.size > 0 ? 1 : 0);
-    for (int j = 2; j <= 2 * r.size - 1; ++j) distance = zeta[j - 1] / zeta[0] < distance ? zeta[j - 1] / zeta[0] : distance;
-    out.boundary_distance = distance;
-  } else {
-    if (r.size < requested) {
-      out.first_failing_index = r.size;
-      out.failing_value = ldexp(r.beta[r.size], 2 * s.length_exponent);
-    }
-    const T second = r.beta[0] * (r.alpha[0] * r.alpha[0]) + (r.size > 1 ? r.beta[0] * r.beta[1] : T(0));
-    T distance(r.size > 0 ? 1 : 0);
-    for (int k = 1; k < r.size; ++k) {
-      const T relative = r.beta[k] * r.beta[0] / second;
-      distance = relative < distance ? relative : distance;
-    }
-    out.boundary_distance = distance;
+  const CoefficientScan<T, N> scan = scan_coefficients(r, requested, 2 * requested, support);
+  r.size = scan.realizable_moments / 2;
+  out.first_failing_index = scan.first_failing_index;
+  out.failing_value = ldexp(scan.failing_value, failing_value_exponent(support, s));
+  out.boundary_distance = boundary_distance(r, scan.zeta, 2 * r.size, support);
+}
+
+// Everything the realizability test, the adaptive inversion and the correction need, in
+// scaled units: the input checks of inversion.hpp, the exact power-of-two scaling, Wheeler's
+// recurrence (on ⌈size/2⌉ levels; an odd set is padded with one zero moment, which only
+// α_{⌈size/2⌉−1} sees, and that α is never used) and the coefficient scan.
+template <class T, int N>
+struct ScaledAnalysis {
+  InversionStatus status = InversionStatus::invalid_input;  // ok, reduced or an input status
+  MomentScaling scaling;
+  Recurrence<T, N> recurrence;  // scaled; r.size levels passed, beta[size] the failing β if any
+  int levels = 0;
+  CoefficientScan<T, N> scan;
+};
+
+// The statuses the input alone decides: invalid_input (a moment NaN or infinite), zero_mass
+// (every moment 0: an empty cell), not_realizable (m_0 <= 0, or an empty cell with nonzero
+// higher moments); ok otherwise (m_0 > 0 and every moment finite).
+template <class T>
+FLUIDBED_HOST_DEVICE InversionStatus input_status(std::span<const T> m) {
+  using std::isfinite;
+  bool all_zero = true;
+  for (const T& x : m) {
+    if (!isfinite(x)) return InversionStatus::invalid_input;
+    all_zero = all_zero && x == T(0);
   }
+  if (all_zero) return InversionStatus::zero_mass;
+  return m[0] > T(0) ? InversionStatus::ok : InversionStatus::not_realizable;
+}
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE ScaledAnalysis<T, N> analyse(std::span<const T> m, Support support) {
+  FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
+  ScaledAnalysis<T, N> a;
+  a.status = input_status(m);
+  if (a.status != InversionStatus::ok) {
+    if (a.status == InversionStatus::not_realizable) a.scan.failing_value = m[0];
+    return a;
+  }
+  const int count = int(m.size());
+  a.scaling = scaling_of(m);
+  T scaled[2 * N]{};
+  scale_moments(m, a.scaling, std::span<T>(scaled, m.size()));
+  if (count == 1) {  // m_0 > 0 alone: realizable, no node
+    a.recurrence.beta[0] = scaled[0];
+    a.scan.realizable_moments = 1;
+    a.status = InversionStatus::ok;
+    return a;
+  }
+  a.levels = (count + 1) / 2;
+  a.recurrence = wheeler_unscaled<T, N>(std::span<const T>(scaled, std::size_t(2 * a.levels)));
+  a.scan = scan_coefficients(a.recurrence, a.levels, count, support);
+  a.status = a.scan.realizable_moments == count ? InversionStatus::ok
+             : a.scan.realizable_moments >= 2   ? InversionStatus::reduced
+                                                : InversionStatus::not_realizable;
+  return a;
+}
+
+// The failing value of an analysis in the caller's units (for m_0 <= 0 it is m_0 itself, and
+// the scaling is the identity).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE T failing_value(const ScaledAnalysis<T, N>& a, Support support) {
+  using std::ldexp;
+  return ldexp(a.scan.failing_value, failing_value_exponent(support, a.scaling));
 }
 
 }  // namespace detail
+
+// The outcome of realizability(): the count, the failure, the coefficients, and the two
+// diagnostics of seed 003 (log-convexity of ln m_k and the Hankel–Hadamard determinants),
+// all in the caller's units.
+template <class T, int N>
+struct RealizabilityReport {
+  // ok: the whole set is realizable; reduced: a proper prefix with >= 1 node is; zero_mass,
+  // not_realizable (m_0 <= 0 with nonzero moments, or not even m_0, m_1: e.g. a mean <= 0 on
+  // [0, ∞)), invalid_input (NaN or ±∞).
+  InversionStatus status = InversionStatus::invalid_input;
+  int realizable_moments = 0;   // R: m_0 … m_{R−1} is strictly inside moment space
+  int realizable_nodes = 0;     // ⌊R/2⌋, the Gauss nodes the set supports
+  int first_failing_index = 0;  // j for ζ_j <= 0 ([0, ∞)), k for β_k <= 0 (real line); 0: none
+  T failing_value = T(0);       // that coefficient (m_0 itself when m_0 <= 0)
+  // α_k, β_k of the realizable_nodes levels (beta[0] = m_0).
+  Recurrence<T, N> recurrence;
+  // ζ_1 … ζ_zeta_count (zeta[j − 1] = ζ_j), up to and including the first failing one (Wheeler
+  // stops at the first β_k <= 0; a ζ_{2k+1} <= 0 with β_{k+1} > 0 lets it go on, and the later
+  // ζ are then listed too). On the real line with m_1 = 0 the ζ are not finite (ζ_2 = β_1/0).
+  std::array<T, 2 * N> zeta{};
+  int zeta_count = 0;
+  T boundary_distance = T(0);  // as InversionResult::boundary_distance, over the realizable moments
+
+  // Seed 003 check 1: Δ²_k = ln m_k − 2 ln m_{k+1} + ln m_{k+2}, k = 0 … size − 3, evaluated as
+  // ln(m̃_k m̃_{k+2}/m̃_{k+1}²) on the scaled moments (no cancellation of large logarithms).
+  // Only when every m_k > 0 (count 0 and log_convex false otherwise). Necessary, not sufficient
+  // beyond 4 moments (note §3.1): the printed seed-003 8-moment sets are log-convex and fail.
+  std::array<T, 2 * N> log_second_differences{};
+  int log_second_difference_count = 0;
+  bool log_convex = false;
+
+  // Seed 003 check 2 (eq. 0.22): the Hankel–Hadamard determinants H_{2i} = det[m_{j+l}]_{0..i}
+  // (a = 0) and H_{2i+1} = det[m_{j+l+1}]_{0..i} (a = 1), k = 0 … hankel_count − 1, as sign and
+  // ln|H_k| (the determinants themselves overflow: ~1e62 for 8 moments in µm). Never formed as
+  // determinants: with u_k = H_k/H_{k−2} (H_{−1} = H_{−2} = 1), the relation
+  //   ς_k = H_k H_{k−3}/(H_{k−1} H_{k−2})   (note §2.2, verified there)
+  // is u_k = ς_k u_{k−1}, u_0 = m_0; and ς_{2i−1}ς_{2i} = β_i gives the even ones from β alone.
+  // So H_k = u_k H_{k−2}, a product of the ζ (or β), stable and O(n). On the real line only the
+  // a = 0 determinants are conditions (odd entries have sign 0 there and are not tested).
+  // Available up to the last ζ (or β) computed.
+  std::array<T, 2 * N> log_abs_hankel{};
+  std::array<int, 2 * N> hankel_sign{};
+  int hankel_count = 0;
+  bool hankel_positive = false;  // every tested determinant among the hankel_count is > 0
+};
+
+// The realizability test of m_0 … m_{size−1}, 1 <= size <= 2N, on the support. Reuses the
+// recurrence of recurrence.hpp (Wheeler on exactly scaled moments); no threshold.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE RealizabilityReport<T, N> realizability(std::span<const T> m,
+                                                             Support support = Support::positive_half_line) {
+  using std::abs;
+  using std::ldexp;
+  using std::log;
+  const detail::ScaledAnalysis<T, N> a = detail::analyse<T, N>(m, support);
+  RealizabilityReport<T, N> out;
+  out.status = a.status;
+  out.failing_value = detail::failing_value(a, support);
+  if (a.status == InversionStatus::invalid_input || !(m[0] > T(0))) return out;  // and zero_mass
+  const int b = a.scaling.length_exponent;
+  out.realizable_moments = a.scan.realizable_moments;
+  out.realizable_nodes = out.realizable_moments / 2;
+  out.first_failing_index = a.scan.first_failing_index;
+  out.recurrence = a.recurrence;
+  out.recurrence.size = out.realizable_nodes;
+  out.boundary_distance = detail::boundary_distance(a.recurrence, a.scan.zeta, out.realizable_moments, support);
+  unscale(out.recurrence, a.scaling);
+  out.recurrence.beta[0] = m[0];  // also when no level is realizable
+  out.zeta_count = a.scan.zeta_count;
+  for (int j = 0; j < out.zeta_count; ++j) out.zeta[std::size_t(j)] = ldexp(a.scan.zeta[std::size_t(j)], b);
+
+  const int count = int(m.size());
+  T scaled[2 * N]{};
+  scale_moments(m, a.scaling, std::span<T>(scaled, m.size()));
+  bool positive = true;
+  for (int k = 0; k < count; ++k) positive = positive && scaled[k] > T(0);
+  if (positive) {
+    out.log_convex = true;
+    out.log_second_difference_count = count >= 3 ? count - 2 : 0;
+    for (int k = 0; k + 2 < count; ++k) {
+      const T d = log((scaled[k] / scaled[k + 1]) / (scaled[k + 1] / scaled[k + 2]));
+      out.log_second_differences[std::size_t(k)] = d;
+      out.log_convex = out.log_convex && d >= T(0);
+    }
+  }
+
+  // Hankel determinants through u_k (see the struct). ln|u| and the signs in caller's units.
+  const bool plus = support == Support::positive_half_line;
+  const int beta_count = a.recurrence.size < a.levels ? a.recurrence.size + 1 : a.recurrence.size;  // β_k, k < this
+  T log_u = log(m[0]);
+  int sign_u = 1;
+  out.hankel_positive = true;
+  for (int k = 0; k < count; ++k) {
+    if (k >= 1) {
+      if (plus) {
+        if (k > out.zeta_count) break;
+        const T z = out.zeta[std::size_t(k - 1)];
+        log_u += log(abs(z));
+        sign_u *= z > T(0) ? 1 : (z < T(0) ? -1 : 0);
+      } else if (k % 2 == 0) {
+        if (k / 2 >= beta_count) break;
+        const T beta = ldexp(a.recurrence.beta[std::size_t(k / 2)], 2 * b);  // u_{2i} = u_{2i−2} β_i
+        log_u += log(abs(beta));
+        sign_u *= beta > T(0) ? 1 : (beta < T(0) ? -1 : 0);
+      }
+    }
+    const int sign_h2 = k >= 2 ? out.hankel_sign[std::size_t(k - 2)] : 1;  // H_{−2} = H_{−1} = 1
+    const T log_h2 = k >= 2 ? out.log_abs_hankel[std::size_t(k - 2)] : T(0);
+    const bool tested = plus || k % 2 == 0;
+    out.hankel_sign[std::size_t(k)] = tested ? sign_u * sign_h2 : 0;
+    out.log_abs_hankel[std::size_t(k)] = tested ? log_u + log_h2 : T(0);
+    if (tested) out.hankel_positive = out.hankel_positive && out.hankel_sign[std::size_t(k)] > 0;
+    out.hankel_count = k + 1;
+  }
+  return out;
+}
+
 }  // namespace fluidbed::moments
