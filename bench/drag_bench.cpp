@@ -9,12 +9,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "fluidbed/drag/any_drag_law.hpp"
+#include "ratio_reporter.hpp"
 
 using namespace fluidbed;
 using namespace fluidbed::drag;
@@ -59,54 +58,25 @@ void with_derivatives(benchmark::State& run, Law law) {
   run.SetItemsProcessed(run.iterations() * cells);
 }
 
-// Collects ns per evaluation (the fastest repetition of each benchmark: the least
-// disturbed by other load), then prints the ratio table.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs)
-      if (r.run_type == Run::RT_Iteration) {
-        const double ns = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e9 / cells;
-        const auto [it, inserted] = ns_per_evaluation_.try_emplace(r.run_name.function_name, ns);
-        if (!inserted && ns < it->second) it->second = ns;
-      }
-  }
-  void print_ratios(const std::string& baseline) const {
-    const auto base = ns_per_evaluation_.find("value/" + baseline);
-    if (base == ns_per_evaluation_.end()) return;
-    std::printf("\n%-28s %14s %8s %20s %8s\n", "law", "value ns/cell", "ratio", "with derivatives ns", "ratio");
-    for (const auto& [name, ns] : ns_per_evaluation_) {
-      if (!name.starts_with("value/")) continue;
-      const std::string law = name.substr(6);
-      std::printf("%-28s %14.2f %8.2f", law.c_str(), ns, ns / base->second);
-      const auto d = ns_per_evaluation_.find("with_derivatives/" + law);
-      if (d != ns_per_evaluation_.end()) std::printf(" %20.2f %8.2f", d->second, d->second / base->second);
-      std::printf("\n");
-    }
-    std::printf("(ns per cell evaluation, fastest repetition; ratios are to value/%s in this run)\n",
-                baseline.c_str());
-  }
-
- private:
-  std::map<std::string, double> ns_per_evaluation_;
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<std::string> laws;
   for (const AnyDragLaw& law : all_drag_laws)
     std::visit(
-        [](const auto& l) {
+        [&laws](const auto& l) {
           const std::string name(l.name());
+          laws.push_back(name);
           benchmark::RegisterBenchmark(("value/" + name).c_str(), [l](benchmark::State& s) { value(s, l); });
           benchmark::RegisterBenchmark(("with_derivatives/" + name).c_str(),
                                        [l](benchmark::State& s) { with_derivatives(s, l); });
         },
         law);
   benchmark::Initialize(&argc, argv);
-  RatioReporter reporter;
+  fluidbed::bench::RatioReporter reporter(cells);
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  reporter.print_ratios("WenYu1966");
+  reporter.print_table(
+      "law", laws, {"value", "with_derivatives"}, [](const std::string&) { return std::string("value/WenYu1966"); },
+      "value/WenYu1966");
   benchmark::Shutdown();
 }

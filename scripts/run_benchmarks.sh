@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the microbenchmarks with optimisation and runs them; prints ns per cell and the
-# ratio of every law to Wen–Yu measured in the same run. Extra arguments go to Google
+# ratio of every drag law to Wen–Yu, and of every moment-inversion path to a generic
+# (dynamic Eigen, dense eigen-solver) baseline, each measured in the same run. Extra arguments go to Google
 # Benchmark (e.g. --benchmark_filter=Mazzei).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,3 +10,4 @@ cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLUIDBED_BUILD_T
       -DFLUIDBED_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build/bench -j "$(nproc)"
 ./build/bench/bench/fluidbed_drag_bench --benchmark_repetitions=5 "$@"
+./build/bench/bench/fluidbed_moments_bench --benchmark_repetitions=5 "$@"

@@ -170,6 +170,10 @@ TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Di
   check({1, -2, 4, -8}, InversionStatus::not_realizable, 0, plus);
   check({1, -2, 4, -8}, InversionStatus::reduced, 1, line);  // a Dirac at −2 on the line
   check({1, 1, 1, 1}, InversionStatus::reduced, 1, plus);  // a Dirac at 1, exact in binary
+  // A subnormal m_0 with ordinary higher moments: the mean overflows, so the set cannot be
+  // scaled to O(1); reported as invalid (it once came out as a node at +∞).
+  check({4.9e-324, 4.3e-4, 3.6e-7, 1.0e-10}, InversionStatus::invalid_input, 0, line);
+  check({4.9e-324, 4.3e-4, 3.6e-7, 1.0e-10}, InversionStatus::invalid_input, 0, plus);
   check({1, 0, 1, 0}, InversionStatus::not_realizable, 0, plus);  // zero mean is not on (0, ∞)
   check({1, 0, 1, 0}, InversionStatus::ok, 2, line);              // ±1, weights 1/2
   // A Dirac whose moments are not exact in binary (2e-6 m, anchors note §9) sits on the

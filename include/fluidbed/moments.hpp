@@ -2,7 +2,9 @@
 #pragma once
 
 #include "moments/adaptive.hpp"
+#include "moments/batched.hpp"
 #include "moments/correction.hpp"
+#include "moments/eigen_backend.hpp"
 #include "moments/inversion.hpp"
 #include "moments/jacobi_eigen.hpp"
 #include "moments/moment_set.hpp"

@@ -6,8 +6,9 @@
 //   3. recurrence by Wheeler's algorithm (default) or product-difference;
 //   4. realizability: the number of nodes the set supports on the chosen support, from the
 //      signs of the Stieltjes coefficients ζ_j ([0, ∞)) or of β_k (real line);
-//   5. nodes and weights of that many nodes: closed form for n <= 2, else QL carrying the
-//      first eigenvector row (jacobi_eigen.hpp), in scaled units;
+//   5. nodes and weights of that many nodes (jacobi_eigen.hpp), in scaled units: closed
+//      forms for n <= 2, a fixed-cost solver for n = 3, else QL carrying the first
+//      eigenvector row;
 //   6. unscale nodes and weights exactly.
 // Never NaN without a status, never an exception or abort: problems are returned as data.
 //
@@ -31,8 +32,8 @@
 namespace fluidbed::moments {
 
 enum class EigenSolver {
-  automatic,    // closed form for n <= 2, Golub–Welsch QL above
-  golub_welsch  // QL for every n (the reference path for the closed forms)
+  automatic,    // closed forms for n <= 2, the fixed-cost three-node solver for n = 3, QL above
+  golub_welsch  // QL for every n (the reference path for the others)
 };
 
 struct InversionOptions {
@@ -45,11 +46,58 @@ namespace detail {
 
 template <class T, int N>
 FLUIDBED_HOST_DEVICE void unscale(Quadrature<T, N>& q, MomentScaling s) {
-  using std::ldexp;
+  const T length = power_of_two<T>(s.length_exponent);
+  const T weight = power_of_two<T>(s.weight_exponent);
   for (int i = 0; i < q.size; ++i) {
-    q.nodes[i] = ldexp(q.nodes[i], s.length_exponent);
-    q.weights[i] = ldexp(q.weights[i], s.weight_exponent);
+    q.nodes[i] = times_power_of_two(q.nodes[i], length, s.length_exponent);
+    q.weights[i] = times_power_of_two(q.weights[i], weight, s.weight_exponent);
   }
+}
+
+}  // namespace detail
+
+namespace detail {
+
+// The pipeline with the eigen step as a parameter: solve(recurrence, quadrature) fills the
+// quadrature of a scaled recurrence and returns false on failure (eigen_backend.hpp passes
+// Eigen's solver). Preconditions as invert().
+template <class T, int N, class Solve>
+FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, const InversionOptions& options,
+                                                        Solve&& solve) {
+  using std::isfinite;
+  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
+  InversionResult<T, N> out;
+  const int requested = int(m.size() / 2);
+  out.status = input_status(m);
+  if (out.status != InversionStatus::ok) {
+    if (out.status == InversionStatus::not_realizable) out.failing_value = m[0];
+    return out;
+  }
+  const MomentScaling s = scaling_of(m);
+  T scaled[2 * N];
+  scale_moments(m, s, std::span<T>(scaled, m.size()));
+  // A set spanning more than the floating-point range (a subnormal m_0 with ordinary higher
+  // moments: its mean overflows) cannot be brought to O(1): reported, never inverted.
+  for (std::size_t k = 0; k < m.size(); ++k)
+    if (!isfinite(scaled[k])) {
+      out.status = InversionStatus::invalid_input;
+      return out;
+    }
+  out.status = InversionStatus::not_realizable;
+  const std::span<const T> view(scaled, m.size());
+  Recurrence<T, N> r = options.algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
+                                                                         : product_difference_unscaled<T, N>(view);
+  assess(r, requested, options.support, s, out);
+  out.realizable_nodes = r.size;
+  if (r.size == 0) return out;  // not_realizable (e.g. a negative mean on [0, ∞))
+  if (!solve(static_cast<const Recurrence<T, N>&>(r), out.quadrature)) {
+    out.quadrature.size = 0;
+    out.status = InversionStatus::eigen_failure;
+    return out;
+  }
+  unscale(out.quadrature, s);
+  out.status = r.size == requested ? InversionStatus::ok : InversionStatus::reduced;
+  return out;
 }
 
 }  // namespace detail
@@ -58,33 +106,20 @@ FLUIDBED_HOST_DEVICE void unscale(Quadrature<T, N>& q, MomentScaling s) {
 // Preconditions: m.size() even, 2 <= m.size() <= 2N. Everything else is a status.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const InversionOptions& options = {}) {
-  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
-  InversionResult<T, N> out;
-  const int requested = int(m.size() / 2);
-  out.status = detail::input_status(m);
-  if (out.status != InversionStatus::ok) {
-    if (out.status == InversionStatus::not_realizable) out.failing_value = m[0];
-    return out;
-  }
-  out.status = InversionStatus::not_realizable;
-  const MomentScaling s = scaling_of(m);
-  T scaled[2 * N];
-  scale_moments(m, s, std::span<T>(scaled, m.size()));
-  const std::span<const T> view(scaled, m.size());
-  Recurrence<T, N> r = options.algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
-                                                                         : product_difference_unscaled<T, N>(view);
-  detail::assess(r, requested, options.support, s, out);
-  out.realizable_nodes = r.size;
-  if (r.size == 0) return out;  // not_realizable (e.g. a negative mean on [0, ∞))
-  if (options.solver == EigenSolver::automatic && r.size <= 2) {
-    out.quadrature = gauss_closed_form(r);
-  } else if (!gauss_golub_welsch(r, out.quadrature)) {
-    out.status = InversionStatus::eigen_failure;
-    return out;
-  }
-  detail::unscale(out.quadrature, s);
-  out.status = r.size == requested ? InversionStatus::ok : InversionStatus::reduced;
-  return out;
+  return detail::invert_with<T, N>(m, options, [&options](const Recurrence<T, N>& r, Quadrature<T, N>& q) {
+    if (options.solver == EigenSolver::automatic) {
+      if (r.size <= 2) {
+        q = gauss_closed_form(r);
+        return true;
+      }
+      if constexpr (N >= 3)
+        if (r.size == 3) {
+          q = gauss_three_nodes(r);
+          return true;
+        }
+    }
+    return gauss_golub_welsch(r, q);
+  });
 }
 
 // Fixed n = N at compile time: exactly 2N moments.

@@ -101,16 +101,19 @@ FLUIDBED_HOST_DEVICE CoefficientScan<T, N> scan_coefficients(const Recurrence<T,
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T boundary_distance(const Recurrence<T, N>& r, const std::array<T, 2 * N>& zeta, int moments,
                                          Support support) {
-  T distance(moments >= 2 ? 1 : 0);
+  if (moments < 2) return T(0);
+  // The smallest coefficient first, one division at the end.
   if (support == Support::positive_half_line) {
+    T smallest = zeta[0];
     for (int j = 2; j <= moments - 1; ++j)
-      if (zeta[j - 1] / zeta[0] < distance) distance = zeta[j - 1] / zeta[0];
-  } else {
-    const T second = r.beta[0] * (r.alpha[0] * r.alpha[0]) + (moments >= 3 ? r.beta[0] * r.beta[1] : T(0));
-    for (int k = 1; 2 * k <= moments - 1; ++k)
-      if (r.beta[k] * r.beta[0] / second < distance) distance = r.beta[k] * r.beta[0] / second;
+      if (zeta[j - 1] < smallest) smallest = zeta[j - 1];
+    return smallest / zeta[0];
   }
-  return distance;
+  const T second = r.alpha[0] * r.alpha[0] + (moments >= 3 ? r.beta[1] : T(0));  // m_2/m_0
+  T smallest = second;
+  for (int k = 1; 2 * k <= moments - 1; ++k)
+    if (r.beta[k] < smallest) smallest = r.beta[k];
+  return smallest / second;
 }
 
 // The caller's-unit value of a failing coefficient: ζ scales like a length, β like its square.

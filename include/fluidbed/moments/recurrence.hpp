@@ -18,8 +18,12 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <span>
+#include <type_traits>
 
 #include "../core/config.hpp"
 
@@ -50,9 +54,46 @@ struct Recurrence {
 
 namespace detail {
 
-// The nearest integer to log2(x) for x > 0 finite, via frexp (exact, any T).
+// IEEE binary64/binary32: exponents are read from, and powers of two written into, the
+// exponent field (a per-cell library call to frexp/ldexp costs more than Wheeler's whole
+// arithmetic at n = 3). Other types (long double, multiprecision) use frexp/ldexp.
+template <class T>
+inline constexpr bool has_binary_layout =
+    std::numeric_limits<T>::is_iec559 && (sizeof(T) == sizeof(std::uint64_t) || sizeof(T) == sizeof(std::uint32_t));
+
+template <class T>
+using layout_bits = std::conditional_t<sizeof(T) == sizeof(std::uint64_t), std::uint64_t, std::uint32_t>;
+
+// 2^e, exactly; 0 or ∞ where 2^e is not a normal number.
+template <class T>
+FLUIDBED_HOST_DEVICE T power_of_two(int e) {
+  if constexpr (has_binary_layout<T>) {
+    constexpr int max_exponent = std::numeric_limits<T>::max_exponent - 1;  // 1023 or 127
+    if (e > max_exponent) return std::numeric_limits<T>::infinity();
+    if (e < 1 - max_exponent) return T(0);
+    using bits = layout_bits<T>;
+    return std::bit_cast<T>(bits(e + max_exponent) << (std::numeric_limits<T>::digits - 1));
+  } else {
+    using std::ldexp;
+    return ldexp(T(1), e);
+  }
+}
+
+// The nearest integer to log2(x) for x > 0 finite.
 template <class T>
 FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
+  if constexpr (has_binary_layout<T>) {
+    using std::isnormal;
+    if (isnormal(x)) {  // x = 2^E · 1.f: E, or E + 1 when 1.f >= √2
+      using bits = layout_bits<T>;
+      constexpr int shift = std::numeric_limits<T>::digits - 1;
+      constexpr bits fraction_mask = (bits(1) << shift) - 1;
+      constexpr bits root_two = std::bit_cast<bits>(T(1.41421356237309504880)) & fraction_mask;
+      const bits b = std::bit_cast<bits>(x);
+      const int e = int(b >> shift) - (std::numeric_limits<T>::max_exponent - 1);
+      return (b & fraction_mask) < root_two ? e : e + 1;
+    }
+  }
   using std::frexp;
   int e = 0;
   const T f = frexp(x, &e);  // x = f 2^e, f in [0.5, 1)
@@ -82,12 +123,31 @@ FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
   return s;
 }
 
-// m̃_k = m_k 2^−(a + k b), exactly.
+namespace detail {
+
+// x · 2^e, rounded as ldexp(x, e) rounds. A product with a normal power of two is that same
+// correctly rounded value, and much cheaper than ldexp; `power` = 2^e precomputed by the
+// caller (0 or ∞ when 2^e is not a normal number, which only a set spanning the whole
+// floating-point range produces: then ldexp itself is used).
+template <class T>
+FLUIDBED_HOST_DEVICE T times_power_of_two(const T& x, const T& power, int e) {
+  using std::isnormal;
+  using std::ldexp;
+  return isnormal(power) ? x * power : ldexp(x, e);
+}
+
+}  // namespace detail
+
+// m̃_k = m_k 2^−(a + k b), exactly (the factors 2^−(a + k b) are exact running products).
 template <class T>
 FLUIDBED_HOST_DEVICE void scale_moments(std::span<const T> m, MomentScaling s, std::span<T> scaled) {
-  using std::ldexp;
-  for (std::size_t k = 0; k < m.size(); ++k)
-    scaled[k] = ldexp(m[k], -(s.weight_exponent + int(k) * s.length_exponent));
+  const T step = detail::power_of_two<T>(-s.length_exponent);
+  T factor = detail::power_of_two<T>(-s.weight_exponent);
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const int e = -(s.weight_exponent + int(k) * s.length_exponent);
+    scaled[k] = detail::times_power_of_two(m[k], factor, e);
+    factor *= step;
+  }
 }
 
 // Undoes scale_moments on a recurrence: α·2^b, β_k·2^(2b) (k >= 1), β_0 = m_0·2^a.
@@ -100,6 +160,59 @@ FLUIDBED_HOST_DEVICE void unscale(Recurrence<T, N>& r, MomentScaling s) {
   }
 }
 
+namespace detail {
+
+// Operations on a lane value V: a scalar T (one cell) here; batched.hpp specialises it for
+// Eigen arrays of L cells. The Wheeler kernel below and the three-node solver of jacobi_eigen.hpp are written
+// once against it.
+template <class V>
+struct lane_ops {
+  using scalar = V;
+  FLUIDBED_HOST_DEVICE static V sqrt(const V& x) {
+    using std::sqrt;
+    return sqrt(x);
+  }
+  FLUIDBED_HOST_DEVICE static V abs(const V& x) {
+    using std::abs;
+    return abs(x);
+  }
+  FLUIDBED_HOST_DEVICE static V min(const V& x, const scalar& bound) { return bound < x ? V(bound) : x; }
+  // +1 or −1 (+1 for zero).
+  FLUIDBED_HOST_DEVICE static V sign(const V& x) { return x < V(0) ? V(-1) : V(1); }
+  // a where s > 0, else b (s is a sign from sign()).
+  FLUIDBED_HOST_DEVICE static V choose(const V& s, const V& a, const V& b) { return s > V(0) ? a : b; }
+};
+
+// Wheeler's levels 0 … n−1 on V, a scalar or a lane of cells (batched.hpp), without an early
+// stop: a level whose b_k is not positive leaves non-finite values in the later ones, which
+// the callers discard. One division per level (1/σ_{k,k} is reused by the next level).
+template <class V, int N>
+FLUIDBED_HOST_DEVICE void wheeler_levels(const V* m, int n, V* alpha, V* beta) {
+  V sigma[3][2 * N];  // σ_{k−2,·}, σ_{k−1,·}, σ_{k,·} in rotation
+  for (int l = 0; l < 2 * n; ++l) sigma[0][l] = m[l];
+  beta[0] = m[0];
+  using S = typename lane_ops<V>::scalar;
+  V inverse_previous = S(1) / m[0];  // 1/σ_{k−1,k−1}
+  alpha[0] = m[1] * inverse_previous;
+  for (int k = 1; k < n; ++k) {
+    const V* previous = sigma[(k + 1) % 3];
+    const V* current = sigma[(k + 2) % 3];
+    V* next = sigma[k % 3];
+    for (int l = k; l < 2 * n - k; ++l) {
+      if (k > 1)
+        next[l] = current[l + 1] - alpha[k - 1] * current[l] - beta[k - 1] * previous[l];
+      else  // σ_{−1,·} = 0
+        next[l] = current[l + 1] - alpha[k - 1] * current[l];
+    }
+    const V inverse_current = S(1) / next[k];
+    beta[k] = next[k] * inverse_previous;
+    alpha[k] = next[k + 1] * inverse_current - current[k] * inverse_previous;
+    inverse_previous = inverse_current;
+  }
+}
+
+}  // namespace detail
+
 // Wheeler (1974), Rocky Mountain J. Math. 4, 287–296, doi:10.1216/RMJ-1974-4-2-287, with
 // ordinary moments (the modified-moment coefficients zero); seed 003 ref. 43, written out in
 // the seeds' note §2.3:
@@ -107,36 +220,22 @@ FLUIDBED_HOST_DEVICE void unscale(Recurrence<T, N>& r, MomentScaling s) {
 //   σ_{k,l} = σ_{k−1,l+1} − a_{k−1} σ_{k−1,l} − b_{k−1} σ_{k−2,l},  l = k … 2n−k−1
 //   a_k = σ_{k,k+1}/σ_{k,k} − σ_{k−1,k}/σ_{k−1,k−1},  b_k = σ_{k,k}/σ_{k−1,k−1}
 // Computes the first n = m.size()/2 (<= N) levels on the moments as given (no scaling; see
-// recurrence() for the scaled entry point). Stops early at the first k with b_k <= 0 or not
-// finite (the set is not realizable on the real line beyond k nodes): result.size = k, and
-// beta[k] holds that b_k.
+// recurrence() for the scaled entry point). result.size is the first k with b_k <= 0 or not
+// finite (the set is not realizable on the real line beyond k nodes), and beta[k] holds
+// that b_k; n when every b_k passes.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> wheeler_unscaled(std::span<const T> m) {
   using std::isfinite;
   const int n = int(m.size() / 2);
   FLUIDBED_EXPECTS(n >= 1 && n <= N);
   Recurrence<T, N> r;
-  constexpr int L = 2 * N;
-  T previous[L]{};  // σ_{k−2,·}
-  T current[L]{};   // σ_{k−1,·}
-  for (int l = 0; l < 2 * n; ++l) current[l] = m[l];
-  r.beta[0] = m[0];
-  r.alpha[0] = m[1] / m[0];
-  r.size = 1;
-  for (int k = 1; k < n; ++k) {
-    T next[L]{};
-    for (int l = k; l < 2 * n - k; ++l)
-      next[l] = current[l + 1] - r.alpha[k - 1] * current[l] - (k > 1 ? r.beta[k - 1] * previous[l] : T(0));
-    const T b = next[k] / current[k - 1];
-    r.beta[k] = b;  // kept even when it fails: beta[size] is then the failing value
-    if (!(b > T(0)) || !isfinite(b)) break;
-    r.alpha[k] = next[k + 1] / next[k] - current[k] / current[k - 1];
-    for (int l = 0; l < 2 * n; ++l) {
-      previous[l] = current[l];
-      current[l] = next[l];
+  detail::wheeler_levels<T, N>(m.data(), n, r.alpha.data(), r.beta.data());
+  r.size = n;
+  for (int k = 1; k < n; ++k)
+    if (!(r.beta[k] > T(0)) || !isfinite(r.beta[k])) {
+      r.size = k;
+      break;
     }
-    r.size = k + 1;
-  }
   return r;
 }
 
@@ -148,7 +247,7 @@ FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrenc
   std::array<T, 2 * N> zeta{};
   if (r.size < 1) return zeta;
   zeta[0] = r.alpha[0];
-  for (int k = 1; k < r.size; ++k) {
+  for (int k = 1; k < r.size && k < N; ++k) {  // k < N follows from size <= N; GCC 12 -O3 needs it said
     zeta[2 * k - 1] = r.beta[k] / zeta[2 * k - 2];
     zeta[2 * k] = r.alpha[k] - zeta[2 * k - 1];
   }
@@ -225,13 +324,14 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   r.beta[0] = m[0];
   r.alpha[0] = zeta[0];
   r.size = computed >= 1 ? 1 : 0;
-  for (int k = 1; k < n && 2 * k + 1 <= computed; ++k) {
+  for (int k = 1; k < n && k < N && 2 * k + 1 <= computed; ++k) {  // k < N: as above, for GCC 12
     r.beta[k] = zeta[2 * k - 2] * zeta[2 * k - 1];
     if (!(r.beta[k] > T(0)) || !isfinite(r.beta[k])) break;
     r.alpha[k] = zeta[2 * k - 1] + zeta[2 * k];
     r.size = k + 1;
   }
-  if (r.size < n && 2 * r.size <= computed) r.beta[r.size] = zeta[2 * r.size - 2] * zeta[2 * r.size - 1];
+  if (r.size >= 1 && r.size < n && 2 * r.size <= computed)
+    r.beta[r.size] = zeta[2 * r.size - 2] * zeta[2 * r.size - 1];
   return r;
 }
 

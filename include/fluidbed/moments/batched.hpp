@@ -1,0 +1,356 @@
+// fluidbed — batched moment inversion: many cells at once, structure of arrays, vectorized
+// across cells.
+//
+// A CFD code stores moment k of every cell in one field array; invert_batched() reads those
+// 2N arrays (moments[k][c]) and writes nodes[i][c], weights[i][c], the node count and the
+// status of every cell. The per-cell pipeline of inversion.hpp is re-expressed over *lanes*:
+// a lane value holds one quantity for L consecutive cells (an Eigen fixed-size array, so
+// every arithmetic operation, square root included, is a SIMD operation at the default
+// flags — compilers do not vectorize std::sqrt while math-errno is on), and every step runs
+// the same operations on all lanes:
+//   1. exact power-of-two scaling, by bit operations on the exponents (no frexp/ldexp);
+//   2. Wheeler's recurrence, the same arithmetic as wheeler_unscaled() without the early stop;
+//   3. realizability (every β_k > 0; on [0, ∞) every ζ_j > 0) as a per-cell mask;
+//   4. nodes and weights: the closed forms of jacobi_eigen.hpp for n <= 2, the fixed-cost
+//      three-node solver below for n = 3, the Golub–Welsch QL cell by cell for n >= 4;
+//   5. exact unscaling.
+// A cell whose mask fails anywhere (empty, non-finite, not fully realizable, scale factors
+// out of range, non-finite result) is inverted again by the per-cell invert(), so that its
+// status, reduced rule and every special case are exactly those of the per-cell pipeline.
+// Only such cells pay for a branch; the lanes never branch on data.
+//
+// Host only: the lanes are Eigen arrays. On a GPU, call invert() per thread (the
+// structure-of-arrays layout is then the coalesced one).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <span>
+
+#include "../core/config.hpp"
+#include "inversion.hpp"
+#include "jacobi_eigen.hpp"
+#include "realizability.hpp"
+#include "recurrence.hpp"
+
+namespace fluidbed::moments {
+
+// Read-only view of the moments of `cells` cells: moment k of cell c is moments[k][c].
+template <class T, int N>
+struct MomentBatch {
+  std::array<const T*, 2 * N> moments{};
+  std::size_t cells = 0;
+};
+
+// Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
+// weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
+template <class T, int N>
+struct QuadratureBatch {
+  std::array<T*, N> nodes{};
+  std::array<T*, N> weights{};
+  int* sizes = nullptr;
+  InversionStatus* status = nullptr;
+};
+
+namespace detail {
+
+template <class T, int L>
+struct lane_ops<Eigen::Array<T, L, 1>> {
+  using scalar = T;
+  using V = Eigen::Array<T, L, 1>;
+  static V sqrt(const V& x) { return x.sqrt(); }
+  static V abs(const V& x) { return x.abs(); }
+  static V min(const V& x, const scalar& bound) { return x.min(bound); }
+  // No comparison or branch per lane, so that the kernels stay vector code once inlined and
+  // unrolled: copysign is bit arithmetic, and the choice is an exact blend of finite values
+  // (a·1 + b·0 = a); a lane holding a non-finite value is discarded anyway.
+  static V sign(const V& x) {
+    V s;
+    for (int i = 0; i < L; ++i) s[i] = std::copysign(T(1), x[i]);
+    return s;
+  }
+  static V choose(const V& s, const V& a, const V& b) {
+    const V f = (s + T(1)) * T(0.5);
+    return a * f + b * (T(1) - f);
+  }
+};
+
+// GCC and Clang do not inline the hundreds of small Eigen functions of a lane kernel on their
+// own; flattening the kernel does, and keeps its values in registers.
+#if defined(__GNUC__) || defined(__clang__)
+#define FLUIDBED_BATCHED_FLATTEN [[gnu::flatten]]
+#else
+#define FLUIDBED_BATCHED_FLATTEN
+#endif
+
+// Cells per lane value: 128 bytes of T (16 doubles, 32 floats), enough independent SIMD
+// operations per statement to hide the latency of divisions and square roots.
+template <class T>
+inline constexpr int batch_lanes = sizeof(T) >= 128 ? 1 : int(128 / sizeof(T));
+
+template <class T>
+using Lanes = Eigen::Array<T, batch_lanes<T>, 1>;
+
+// What the fast path requires of each lane, accumulated without comparisons (see
+// lane_ops::sign): every value it uses finite, the realizability coefficients positive, the
+// scale factors normal numbers. Any NaN or ±∞ makes `finite` NaN, so the minima may ignore
+// NaN; a lane passes if finite = 0, positive > 0 and normal >= the smallest normal number.
+template <class V>
+struct LaneGuards {
+  using T = typename V::Scalar;
+  V finite = V::Zero();
+  V positive = V::Constant(T(1));
+  V normal = V::Constant(T(1));
+  void require_finite(const V& x) { finite += x - x; }
+  void require_positive(const V& x) {
+    require_finite(x);
+    positive = positive.min(x);
+  }
+  void require_normal(const V& x) {
+    require_finite(x);
+    normal = normal.min(x);
+  }
+  bool passes(int i) const {
+    return finite[i] == T(0) && positive[i] > T(0) && normal[i] >= std::numeric_limits<T>::min();
+  }
+};
+
+// IEEE binary32/binary64 bit layout, for exact powers of two without frexp/ldexp.
+template <class T>
+struct binary_layout {
+  static constexpr bool available = false;
+};
+template <>
+struct binary_layout<double> {
+  static constexpr bool available = std::numeric_limits<double>::is_iec559;
+  using bits = std::uint64_t;
+  static constexpr int mantissa_bits = 52;
+};
+template <>
+struct binary_layout<float> {
+  static constexpr bool available = std::numeric_limits<float>::is_iec559;
+  using bits = std::uint32_t;
+  static constexpr int mantissa_bits = 23;
+};
+
+// Exact power-of-two scales of the cells of a lane value: m_k = weight·length^k·m̃_k.
+template <class V>
+struct LaneScales {
+  V weight, inverse_weight, length, inverse_length;
+};
+
+// weight = 2^floor(log2 m_0); length = 2^floor(log2(m_1/m_0)) or, on the real line when the
+// mean is not a positive normal number, 2^floor(log2(m_2/m_0)/2) (the choices of scaling_of,
+// rounded down instead of to nearest). Any power of two serves: every step of the pipeline
+// commutes exactly with a power-of-two change of units. For IEEE types the powers are read
+// from and written into the exponent field; other types use scaling_of and ldexp. The guards
+// require m_0, the ratio the length comes from, the scales and their inverses to be normal
+// numbers.
+template <Support support, class V>
+LaneScales<V> lane_scales(const V& m0, const V& m1, const V& m2, LaneGuards<V>& guards) {
+  using T = typename V::Scalar;
+  constexpr int L = int(V::SizeAtCompileTime);
+  LaneScales<V> s;
+  if constexpr (binary_layout<T>::available) {
+    using bits = typename binary_layout<T>::bits;
+    constexpr int shift = binary_layout<T>::mantissa_bits;
+    constexpr bits bias = bits(std::numeric_limits<T>::max_exponent - 1);
+    constexpr bits exponent_mask = (2 * bias + 1) << shift;
+    // 2^e with e the exponent of x, and 2^−e: their biased exponents sum to twice the bias.
+    const auto below = [&](const V& x, V& power, V& inverse) {
+      for (int i = 0; i < L; ++i) {
+        const bits exponent = std::bit_cast<bits>(x[i]) & exponent_mask;
+        power[i] = std::bit_cast<T>(exponent);
+        inverse[i] = std::bit_cast<T>((2 * bias << shift) - exponent);
+      }
+    };
+    const V mean = m1 / m0;
+    below(m0, s.weight, s.inverse_weight);
+    below(mean, s.length, s.inverse_length);
+    if constexpr (support == Support::real_line) {
+      // 2^floor(e/2) for m_2/m_0 = 2^e·f: biased exponent ⌊(E + bias)/2⌋.
+      const V second = m2 / m0;
+      V root, inverse_root;
+      for (int i = 0; i < L; ++i) {
+        const bits half = (((std::bit_cast<bits>(second[i]) & exponent_mask) >> shift) + bias) >> 1;
+        root[i] = std::bit_cast<T>(half << shift);
+        inverse_root[i] = std::bit_cast<T>((2 * bias - half) << shift);
+      }
+      const auto use_mean = mean >= std::numeric_limits<T>::min() && mean <= std::numeric_limits<T>::max();
+      s.length = use_mean.select(s.length, root);
+      s.inverse_length = use_mean.select(s.inverse_length, inverse_root);
+      guards.require_normal(use_mean.select(mean, second));
+    } else {
+      guards.require_normal(mean);  // else not realizable on [0, ∞): the per-cell path says so
+    }
+  } else {
+    using std::ldexp;
+    for (int i = 0; i < L; ++i) {
+      const T m[3] = {m0[i], m1[i], m2[i]};
+      const MomentScaling e = m0[i] > T(0) ? scaling_of(std::span<const T>(m, 3)) : MomentScaling{};
+      s.weight[i] = ldexp(T(1), e.weight_exponent);
+      s.inverse_weight[i] = ldexp(T(1), -e.weight_exponent);
+      s.length[i] = ldexp(T(1), e.length_exponent);
+      s.inverse_length[i] = ldexp(T(1), -e.length_exponent);
+    }
+  }
+  for (const V* x : std::initializer_list<const V*>{&m0, &s.weight, &s.inverse_weight, &s.length, &s.inverse_length})
+    guards.require_normal(*x);
+  return s;
+}
+
+// Steps 1–5 of the batched pipeline on one lane value of cells: nodes and weights in x and w,
+// and the guards that tell which lanes they are valid for.
+template <Support support, class V, int N>
+FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N], V (&w)[N], LaneGuards<V>& guards) {
+  using T = typename V::Scalar;
+  constexpr int L = int(V::SizeAtCompileTime);
+  for (int k = 0; k < 2 * N; ++k) guards.require_finite(m[k]);
+  // 1. Exact scaling: the factors 2^−(a + k b) by repeated exact products, all normal if the
+  // last one is (they are monotonic in k and the first one is checked by lane_scales).
+  const LaneScales<V> s = lane_scales<support>(m[0], m[1], m[2 % (2 * N)], guards);
+  V scaled[2 * N];
+  V factor = s.inverse_weight;
+  for (int k = 0; k < 2 * N; ++k) {
+    scaled[k] = m[k] * factor;
+    if (k + 1 < 2 * N) factor *= s.inverse_length;
+  }
+  guards.require_normal(factor);
+  // 2. Recurrence.
+  V alpha[N], beta[N];
+  wheeler_levels<V, N>(scaled, N, alpha, beta);
+  // 3. Realizability: every β_k > 0 and finite (the per-cell Wheeler's stop test), and on
+  // [0, ∞) every ζ_j > 0 and finite (as scan_coefficients()).
+  for (int k = 0; k < N; ++k) guards.require_finite(alpha[k]);
+  for (int k = 1; k < N; ++k) guards.require_positive(beta[k]);
+  if constexpr (support == Support::positive_half_line) {
+    V zeta = alpha[0];  // ζ_1, then ζ_{2k} and ζ_{2k+1}
+    guards.require_positive(zeta);
+    for (int k = 1; k < N; ++k) {
+      const V even = beta[k] / zeta;
+      zeta = alpha[k] - even;
+      guards.require_positive(even);
+      guards.require_positive(zeta);
+    }
+  }
+  // 4. Nodes and weights of the scaled recurrence.
+  if constexpr (N == 3) {
+    gauss_three_nodes(alpha, beta, x, w);
+  } else {
+    for (int k = 0; k < N; ++k) {
+      x[k].setZero();
+      w[k].setZero();
+    }
+    for (int i = 0; i < L; ++i) {
+      if (!guards.passes(i)) continue;
+      Recurrence<T, N> r;
+      r.size = N;
+      for (int k = 0; k < N; ++k) {
+        r.alpha[k] = alpha[k][i];
+        r.beta[k] = beta[k][i];
+      }
+      Quadrature<T, N> q;
+      if constexpr (N <= 2) {
+        q = gauss_closed_form(r);
+      } else if (!gauss_golub_welsch(r, q)) {
+        guards.finite[i] = std::numeric_limits<T>::quiet_NaN();  // the per-cell path reports it
+        continue;
+      }
+      for (int k = 0; k < N; ++k) {
+        x[k][i] = q.nodes[k];
+        w[k][i] = q.weights[k];
+      }
+    }
+  }
+  // 5. Unscaling.
+  for (int k = 0; k < N; ++k) {
+    x[k] *= s.length;
+    w[k] *= s.weight;
+    guards.require_finite(x[k]);
+    guards.require_finite(w[k]);
+  }
+}
+
+// Inverts `count` <= L cells from cell `first` on: the lane kernel, then the per-cell
+// invert() for every cell it did not validate.
+template <Support support, class T, int N>
+void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, const QuadratureBatch<T, N>& out) {
+  using V = Lanes<T>;
+  constexpr int L = int(V::SizeAtCompileTime);
+  V m[2 * N];
+  for (int k = 0; k < 2 * N; ++k) {
+    if (count == L) {
+      m[k] = Eigen::Map<const V>(in.moments[k] + first);
+    } else {
+      m[k].setZero();  // padding lanes: empty cells, never stored
+      for (int i = 0; i < count; ++i) m[k][i] = in.moments[k][first + i];
+    }
+  }
+  V x[N], w[N];
+  LaneGuards<V> guards;
+  invert_lane_values<support>(m, x, w, guards);
+  for (int k = 0; k < N; ++k) {
+    if (count == L) {
+      Eigen::Map<V>(out.nodes[k] + first) = x[k];
+      Eigen::Map<V>(out.weights[k] + first) = w[k];
+    } else {
+      for (int i = 0; i < count; ++i) {
+        out.nodes[k][first + i] = x[k][i];
+        out.weights[k][first + i] = w[k][i];
+      }
+    }
+  }
+  for (int i = 0; i < count; ++i) {
+    const std::size_t c = first + std::size_t(i);
+    if (guards.passes(i)) {
+      out.sizes[c] = N;
+      out.status[c] = InversionStatus::ok;
+      continue;
+    }
+    T cell[2 * N];
+    for (int k = 0; k < 2 * N; ++k) cell[k] = m[k][i];
+    const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell, 2 * N), {.support = support});
+    out.sizes[c] = result.quadrature.size;
+    out.status[c] = result.status;
+    for (int k = 0; k < N; ++k) {
+      out.nodes[k][c] = result.quadrature.nodes[k];
+      out.weights[k][c] = result.quadrature.weights[k];
+    }
+  }
+}
+
+template <Support support, class T, int N>
+void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
+  constexpr std::size_t L = std::size_t(batch_lanes<T>);
+  for (std::size_t first = 0; first < in.cells; first += L)
+    invert_lanes<support>(in, first, int(in.cells - first < L ? in.cells - first : L), out);
+}
+
+}  // namespace detail
+
+// Inverts every cell of the batch: 2N moments per cell to an N-node Gauss rule, with the
+// results, statuses and reduced rules of invert<T, N>(moments of the cell, {.support}) — to
+// rounding for N = 3 (a different eigen-solver), bit for bit otherwise (at flags without
+// floating-point contraction). Allocation-free and thread-safe; distinct threads may invert
+// disjoint cell ranges of the same arrays. Preconditions: every pointer of `in` and `out`
+// addresses `in.cells` elements.
+template <class T, int N>
+void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
+                    Support support = Support::positive_half_line) {
+  static_assert(N >= 1);
+  if (support == Support::positive_half_line)
+    detail::invert_batched<Support::positive_half_line>(in, out);
+  else
+    detail::invert_batched<Support::real_line>(in, out);
+}
+
+}  // namespace fluidbed::moments
+
+#undef FLUIDBED_BATCHED_FLATTEN
