@@ -196,7 +196,7 @@ TEST_CASE("the weight rule and the node rule, each with its documented relative 
   CHECK(default_boundary_tolerance<double>() == doctest::Approx(3.6668e-11).epsilon(1e-4));
 }
 
-TEST_CASE("Gauss–Radau with node 0 of uniform [0, 1] from 11 moments: the oracle's 6-point rule") {
+TEST_CASE("Gauss–Radau with node 0 of uniform 0 to 1 from 11 moments: the oracle's 6-point rule") {
   const auto& oracle = MomentReference::instance();
   const auto& m = oracle.moments("radau_legendre01");
   REQUIRE(m.size() == 11);
@@ -235,7 +235,7 @@ TEST_CASE("Gauss–Radau with node 0 of uniform [0, 1] from 11 moments: the orac
   CHECK_FALSE(gauss.radau);
 }
 
-TEST_CASE("Gauss–Radau at the lower sieve aperture uses the odd moment; where it fails, Gauss") {
+TEST_CASE("Gauss–Radau at the lower sieve aperture uses the odd moment, where it fails, Gauss") {
   // Note §7.5(b) PSD, 7 moments, node fixed at the 45 µm aperture: 4 nodes reproducing M_0 … M_6.
   const std::array<double, 8> edges{45, 53, 63, 75, 90, 106, 125, 150};
   const std::array<double, 7> fractions{0.05, 0.10, 0.20, 0.30, 0.20, 0.10, 0.05};

@@ -309,7 +309,7 @@ TEST_CASE("batched on the seeds' references: 3 atoms exactly (note §7.1), the 4
   }
 }
 
-TEST_CASE("three-node solver: Gauss–Legendre on [0, 1] from its exact recurrence, in double and 50 digits") {
+TEST_CASE("three-node solver: Gauss–Legendre on 0 to 1 from its exact recurrence, in double and 50 digits") {
   // Shifted Legendre: α_k = 1/2, β_1 = 1/12, β_2 = 1/15; nodes 1/2 ∓ √15/10, 1/2; weights 5/18, 4/9.
   Recurrence<double, 3> r;
   r.size = 3;
@@ -392,7 +392,7 @@ TEST_CASE("three-node solver = QL on random Jacobi matrices, and lanes = cells")
   }
 }
 
-TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on [0, 1] from m_k = 1/(k+1) (anchors note §9)") {
+TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on 0 to 1 from m_k = 1/(k+1) (anchors note §9)") {
   std::array<double, 10> m{};
   for (int k = 0; k < 10; ++k) m[k] = 1.0 / (k + 1);
   const double x[] = {0.046910077030668004, 0.23076534494715845, 0.5, 0.76923465505284155, 0.953089922969332};
@@ -441,7 +441,7 @@ TEST_CASE("Eigen backend: the 4-class mixture of seed note §7.2 with 2, 3, 4 no
   }
 }
 
-TEST_CASE("Eigen backend: statuses and diagnostics of invert(); a power-of-two change of unit is exact") {
+TEST_CASE("Eigen backend: statuses and diagnostics of invert(), a power-of-two change of unit is exact") {
   for (const Cell<double, 3>& m : degenerate_cells<double, 3>())
     for (Support support : {Support::positive_half_line, Support::real_line}) {
       const InversionResult<double, 3> e = invert_eigen<3>(m, {.support = support});

@@ -164,7 +164,7 @@ TEST_CASE("Beetstra2007 is VanDerHoef2005 at Re = 0 exactly, and tends to it con
 }
 
 // ------------------------------------------------------------------------ anchors appendix
-TEST_CASE("conventions agree with the anchors' re-evaluation of the codes (appendix; not published data)") {
+TEST_CASE("conventions agree with the anchors' re-evaluation of the codes (appendix, not published data)") {
   // Air ρ = 1.2, μ = 1.8e-5, d = 500 µm, w = 0.5 m/s; β_pg at φ = 0.05, 0.2, 0.4, 0.55.
   const std::array<double, 4> voidages{0.95, 0.8, 0.6, 0.45};
   struct Expected {

@@ -61,7 +61,7 @@ TEST_CASE("the regularised form equals Table 3.1's β = ¾ C_D ρ w (1-ε)/d ε^
     }
 }
 
-TEST_CASE("limits: ψ_e → 2.80 for Re → 0 and Re → ∞ (eqs. 3.68, 3.71); zero-slip Stokes value; ε = 1") {
+TEST_CASE("limits: ψ_e → 2.80 for Re → 0 and Re → ∞ (eqs. 3.68, 3.71), zero-slip Stokes value, ε = 1") {
   for (double eps : {0.4, 0.7, 0.95}) {
     CHECK(ML::equivalent_exponent(eps, 1e-14) == doctest::Approx(2.8).epsilon(1e-5));
     CHECK(ML::equivalent_exponent(eps, 1e18) == doctest::Approx(2.8).epsilon(1e-5));

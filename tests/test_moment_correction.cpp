@@ -152,7 +152,7 @@ TEST_CASE("sets that must stay untouched: the log-normal of note §7.7, realizab
   }
 }
 
-TEST_CASE("seed 003 printed sets: log-convex, so McGraw stops at once; the log-normal fill (note §7.6)") {
+TEST_CASE("seed 003 printed sets: log-convex, so McGraw stops at once, the log-normal fill (note §7.6)") {
   const auto& a = MomentReference::instance().moments("seed003_A_printed");
   const auto r = correct_moments<double, capacity>(std::span<const double>(a.data(), 8));
   CHECK(r.iterations == 0);
@@ -169,7 +169,7 @@ TEST_CASE("seed 003 printed sets: log-convex, so McGraw stops at once; the log-n
   }
 }
 
-TEST_CASE("M_0 M_2 < M_1²: no log-normal exists; the monodisperse set keeps M_0, M_1") {
+TEST_CASE("M_0 M_2 < M_1²: no log-normal exists, the monodisperse set keeps M_0, M_1") {
   // Four moments (no McGraw): 1, 2, 3, 8 → 1, 2, 4, 8, an atom at d43 = 2.
   const std::array<double, 4> m{1, 2, 3, 8};
   const auto r = correct(m);

@@ -110,7 +110,7 @@ TEST_CASE("recurrences with exact closed forms: Laguerre (non-integer a), shifte
   }
 }
 
-TEST_CASE("Gauss–Legendre on [0, 1] from m_k = 1/(k+1) (exact rule, anchors note §9)") {
+TEST_CASE("Gauss–Legendre on 0 to 1 from m_k = 1/(k+1) (exact rule, anchors note §9)") {
   std::array<double, 10> m{};
   for (int k = 0; k < 10; ++k) m[k] = 1.0 / (k + 1);
   const double x[] = {0.046910077030668004, 0.23076534494715845, 0.5, 0.76923465505284155, 0.953089922969332};

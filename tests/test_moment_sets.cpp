@@ -46,7 +46,7 @@ TEST_CASE("moments of a quadrature: the three atoms of note §7.1, and a round t
   CHECK(quadrature_moment(r.quadrature, -1) == doctest::Approx(0.2 + 0.25 + 0.06).epsilon(1e-13));
 }
 
-TEST_CASE("sieve moments, one bin [100, 200] µm: the exact rationals of note §7.5(a) and the oracle") {
+TEST_CASE("sieve moments, one bin 100 to 200 µm: the exact rationals of note §7.5(a) and the oracle") {
   const SieveAnalysis<double> one{bin_edges, bin_fraction};
   const double exact[] = {0.6, 90, 14000, 2250000, 372000000, 63000000000};
   for (int k = 0; k < 6; ++k) CHECK(sieve_moment(one, 0.4, k) == doctest::Approx(exact[k]).epsilon(4e-16));

@@ -60,7 +60,7 @@ TEST_CASE("realizable oracle cases: status ok, every ζ within the conditioned t
   CHECK(checked == 75);
 }
 
-TEST_CASE("uniform [0, 1]: the exact ζ, odd counts, and m_3 := 0 fails at ζ_3 = −8/3 (anchors §1.7, §9)") {
+TEST_CASE("uniform 0 to 1: the exact ζ, odd counts, and m_3 := 0 fails at ζ_3 = −8/3 (anchors §1.7, §9)") {
   // ζ_{2k} = k/(2(2k + 1)), ζ_{2k+1} = (k + 1)/(2(2k + 1)).
   std::vector<double> m(9);
   for (std::size_t k = 0; k < m.size(); ++k) m[k] = 1.0 / double(k + 1);
@@ -140,7 +140,7 @@ TEST_CASE("seed 003 printed sets: log-convex, yet not realizable — ζ and Hank
   }
 }
 
-TEST_CASE("random Jacobi matrices: realizable on the line, failing on [0, ∞) at the oracle's ζ") {
+TEST_CASE("random Jacobi matrices: realizable on the line, failing on 0 to ∞ at the oracle's ζ") {
   const auto& oracle = MomentReference::instance();
   int failing_cases = 0;
   for (int i = 0; i < 20; ++i) {

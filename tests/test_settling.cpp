@@ -117,7 +117,7 @@ TEST_CASE("every settling quantity agrees with the independent mpmath reference 
 
 // ============================================================================ exponents
 
-TEST_CASE("eq. 3.24: the values seed note 000 marks [checked], and the limits 4.8 / 2.4") {
+TEST_CASE("eq. 3.24: the values seed note 000 marks checked, and the limits 4.8 / 2.4") {
   // Tolerances: half a unit in the last printed digit.
   CHECK(richardson_zaki_exponent_mazzei(1e-6) == doctest::Approx(4.79999).epsilon(1e-6));
   CHECK(richardson_zaki_exponent_mazzei(0.1) == doctest::Approx(4.727566).epsilon(2.5e-7));
@@ -230,7 +230,7 @@ TEST_CASE("the Richardson–Zaki law, its inverse, and Re_t from (Re, ε)") {
 
 // ============================================================================ terminal velocity
 
-TEST_CASE("Dallavalle terminal velocity: the seed's [checked] systems") {
+TEST_CASE("Dallavalle terminal velocity: the seed's checked systems") {
   const auto check = [](const Fluid<double>& fluid, const Particles<double>& particles, double u_t, double re_t,
                         double n, double tolerance) {
     const double terminal = terminal_velocity_dallavalle(fluid, particles);
@@ -451,7 +451,7 @@ TEST_CASE("a law discontinuous in ε: Gidaspow's switch can hold the bed at its 
         0.8);
 }
 
-TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage; long double and float agree") {
+TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage, long double and float agree") {
   const seed000::System& system = system_of(2);
   for (double u : {9.05e-3, 2.85e-2}) {
     CHECK(*equilibrium_voidage(drag::Ergun{}, u, system.fluid, system.particles) ==
@@ -473,7 +473,7 @@ TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage; long double an
   }
 }
 
-TEST_CASE("below minimum fluidization the law's voidage is below ε_mf; Ergun at u_mf(ε_mf) gives ε_mf") {
+TEST_CASE("below minimum fluidization the law's voidage is below ε_mf, Ergun at u_mf(ε_mf) gives ε_mf") {
   const Particles<double> sand{.density = 2650.0, .diameter = 4e-4};
   for (double eps_mf : {0.38, 0.4, 0.45}) {
     const double u_mf = minimum_fluidization_velocity_ergun(water, sand, eps_mf);
@@ -488,7 +488,7 @@ TEST_CASE("below minimum fluidization the law's voidage is below ε_mf; Ergun at
         doctest::Approx(archimedes(water, sand)).epsilon(1e-10));
 }
 
-TEST_CASE("voidage ratio ε_law/ε_R&Z (seed 000 Figs 3.1–3.3): the values seed note 000 §9 marks [checked]") {
+TEST_CASE("voidage ratio ε_law/ε_R&Z (seed 000 Figs 3.1–3.3): the values seed note 000 §9 marks checked") {
   const std::vector<double> re{1e-3, 1.0, 10.0, 100.0, 1e3, 1e5};
   const auto check = [&](const auto& law, double eps_rz, const std::vector<double>& expected) {
     for (std::size_t i = 0; i < re.size(); ++i) {
@@ -532,7 +532,7 @@ TEST_CASE("equivalent exponent ψ_e (eq. 3.64)") {
 
 // ============================================================================ minimum fluidization
 
-TEST_CASE("minimum fluidization: Ergun quadratic, its limits and sphericity; Wen & Yu") {
+TEST_CASE("minimum fluidization: Ergun quadratic, its limits and sphericity, Wen & Yu") {
   // The root satisfies the quadratic, with no cancellation for tiny Ar.
   for (double ar : {1e-12, 1e-3, 10.0, 1e4, 1e9})
     for (double eps : {0.38, 0.45})
