@@ -77,13 +77,7 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     constexpr std::string_view function = "SyamlalOBrien::from_minimum_fluidization";
     require_positive(function, "minimum_fluidization_velocity", velocity);
     require_in_open(function, "minimum_fluidization_voidage", voidage, T(0), T(1));
-    require_positive(function, "fluid.density", fluid.density);
-    require_positive(function, "fluid.viscosity", fluid.viscosity);
-    require_positive(function, "particles.diameter", particles.diameter);
-    require_positive(function, "gravity", gravity);
-    if (!(particles.density > fluid.density))
-      fluidbed::detail::throw_domain_error(function, "particles.density", particles.density,
-                                           "must exceed fluid.density for a fluidized bed");
+    settling::detail::validate_settling(function, fluid, particles, gravity);
     const T archimedes_number = archimedes(fluid, particles, gravity);
     const T re_terminal = settling::terminal_reynolds_dallavalle(archimedes_number);
     const T ratio = fluid.density * (velocity / voidage) * particles.diameter / fluid.viscosity / re_terminal;

@@ -9,7 +9,7 @@
 // flags — compilers do not vectorize std::sqrt while math-errno is on), and every step runs
 // the same operations on all lanes:
 //   1. exact power-of-two scaling, by bit operations on the exponents (no frexp/ldexp);
-//   2. Wheeler's recurrence, the same arithmetic as wheeler_unscaled() without the early stop;
+//   2. Wheeler's recurrence: detail::wheeler_levels, the kernel wheeler_unscaled() runs per cell;
 //   3. realizability (every β_k > 0; on [0, ∞) every ζ_j > 0) as a per-cell mask;
 //   4. nodes and weights: the closed forms of jacobi_eigen.hpp for n <= 2, the fixed-cost
 //      three-node solver below for n = 3, the Golub–Welsch QL cell by cell for n >= 4;
@@ -122,24 +122,6 @@ struct LaneGuards {
   }
 };
 
-// IEEE binary32/binary64 bit layout, for exact powers of two without frexp/ldexp.
-template <class T>
-struct binary_layout {
-  static constexpr bool available = false;
-};
-template <>
-struct binary_layout<double> {
-  static constexpr bool available = std::numeric_limits<double>::is_iec559;
-  using bits = std::uint64_t;
-  static constexpr int mantissa_bits = 52;
-};
-template <>
-struct binary_layout<float> {
-  static constexpr bool available = std::numeric_limits<float>::is_iec559;
-  using bits = std::uint32_t;
-  static constexpr int mantissa_bits = 23;
-};
-
 // Exact power-of-two scales of the cells of a lane value: m_k = weight·length^k·m̃_k.
 template <class V>
 struct LaneScales {
@@ -158,9 +140,9 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V& m2, LaneGuards<V>& 
   using T = typename V::Scalar;
   constexpr int L = int(V::SizeAtCompileTime);
   LaneScales<V> s;
-  if constexpr (binary_layout<T>::available) {
-    using bits = typename binary_layout<T>::bits;
-    constexpr int shift = binary_layout<T>::mantissa_bits;
+  if constexpr (has_binary_layout<T>) {
+    using bits = layout_bits<T>;
+    constexpr int shift = std::numeric_limits<T>::digits - 1;
     constexpr bits bias = bits(std::numeric_limits<T>::max_exponent - 1);
     constexpr bits exponent_mask = (2 * bias + 1) << shift;
     // 2^e with e the exponent of x, and 2^−e: their biased exponents sum to twice the bias.
@@ -191,14 +173,13 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V& m2, LaneGuards<V>& 
       guards.require_normal(mean);  // else not realizable on [0, ∞): the per-cell path says so
     }
   } else {
-    using std::ldexp;
     for (int i = 0; i < L; ++i) {
       const T m[3] = {m0[i], m1[i], m2[i]};
       const MomentScaling e = m0[i] > T(0) ? scaling_of(std::span<const T>(m, 3)) : MomentScaling{};
-      s.weight[i] = ldexp(T(1), e.weight_exponent);
-      s.inverse_weight[i] = ldexp(T(1), -e.weight_exponent);
-      s.length[i] = ldexp(T(1), e.length_exponent);
-      s.inverse_length[i] = ldexp(T(1), -e.length_exponent);
+      s.weight[i] = power_of_two<T>(e.weight_exponent);
+      s.inverse_weight[i] = power_of_two<T>(-e.weight_exponent);
+      s.length[i] = power_of_two<T>(e.length_exponent);
+      s.inverse_length[i] = power_of_two<T>(-e.length_exponent);
     }
   }
   for (const V* x : std::initializer_list<const V*>{&m0, &s.weight, &s.inverse_weight, &s.length, &s.inverse_length})

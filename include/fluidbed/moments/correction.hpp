@@ -159,17 +159,23 @@ FLUIDBED_HOST_DEVICE bool on_boundary(const RealizabilityReport<T, N>& report, c
 // set cannot be corrected at all or is empty.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE bool start_correction(std::span<const T> m, CorrectionResult<T, N>& out) {
-  using std::isfinite;
   out.size = int(m.size());
-  bool all_zero = true, finite = true;
   for (int k = 0; k < out.size; ++k) {
     out.moments[k] = m[k];
     out.ratio[k] = T(1);
-    finite = finite && isfinite(m[k]);
-    all_zero = all_zero && m[k] == T(0);
   }
-  out.status = !finite ? CorrectionStatus::failed : all_zero ? CorrectionStatus::zero_mass : CorrectionStatus::unchanged;
-  if (finite && !all_zero && !(m[0] > T(0) && (out.size < 2 || m[1] > T(0)))) out.status = CorrectionStatus::failed;
+  // The input checks of the inversion (non-finite, empty, m_0 <= 0), plus m_1 > 0: the
+  // logarithms below need positive moments.
+  switch (input_status(m)) {
+    case InversionStatus::zero_mass:
+      out.status = CorrectionStatus::zero_mass;
+      break;
+    case InversionStatus::ok:
+      out.status = out.size < 2 || m[1] > T(0) ? CorrectionStatus::unchanged : CorrectionStatus::failed;
+      break;
+    default:
+      out.status = CorrectionStatus::failed;
+  }
   return out.status == CorrectionStatus::unchanged;
 }
 
