@@ -99,6 +99,37 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     return -log(voidage_function(voidage, re)) / log(voidage);
   }
 
+  // A state with Re > 0 solved for Re* (plain floating point): what the hot paths of β and of
+  // the elastic modulus (elastic/elastic_modulus.hpp) share. E = ε^(−n_e/2), so that
+  // √Re* = √Re E (eq. 3.53) and ε^(1 − n_e) = ε E².
+  template <class T>
+  struct SolvedState {
+    T root_reynolds;   // √Re
+    T inverse_root_power;  // E
+    T scaled_power;    // y = 0.175 Re*^¾
+    T log_voidage;     // ln ε
+    T exponent;        // n_e(Re*)
+  };
+
+  template <class T>
+  FLUIDBED_HOST_DEVICE static SolvedState<T> solve_state(const T& re, const T& voidage) {
+    using std::exp;
+    using std::sqrt;
+    const auto r = settling::detail::solve_terminal_reynolds(re, voidage);
+    const T n = settling::detail::exponent_of_scaled_power(r.scaled_power);
+    return {sqrt(re), exp(T(-0.5) * n * r.log_voidage), r.scaled_power, r.log_voidage, n};
+  }
+
+  // β = ¾ μ_f (1 − ε) ε (0.63 √Re E² + 4.8 E)² / d² of a solved state: one exp after the solve.
+  template <class T>
+  FLUIDBED_HOST_DEVICE static T beta_of_state(const SolvedState<T>& state, const T& voidage, const Fluid<T>& fluid,
+                                              const T& diameter) {
+    const T prefactor = 0.75 * fluid.viscosity / (diameter * diameter);
+    const T e = state.inverse_root_power;
+    const T root = (T(0.63) * state.root_reynolds * e + T(4.8)) * e;
+    return prefactor * (T(1) - voidage) * voidage * root * root;
+  }
+
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid,
                                      const T& diameter) const {
@@ -108,13 +139,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     const T prefactor = 0.75 * fluid.viscosity / (diameter * diameter);
     if constexpr (std::is_same_v<S, T>) {
       if (re > T(0)) {
-        // The hot path. With E = ε^(−n_e/2): √Re* = √Re E (eq. 3.53) and ε^(1 − n_e) = ε E²,
-        // so β = ¾ μ_f (1 − ε) ε (0.63 √Re E² + 4.8 E)² / d² costs one exp after the solve.
-        using std::sqrt;
-        const auto r = settling::detail::solve_terminal_reynolds(re, voidage);
-        const T e = exp(T(-0.5) * settling::detail::exponent_of_scaled_power(r.scaled_power) * r.log_voidage);
-        const T root = (T(0.63) * sqrt(re) * e + T(4.8)) * e;
-        return prefactor * (T(1) - voidage) * voidage * root * root;
+        return beta_of_state(solve_state(re, voidage), voidage, fluid, diameter);
       }
     }
     const S re_star = effective_reynolds(voidage, re);
