@@ -35,6 +35,7 @@ class ReferenceTable {
     std::stringstream stream(line);
     std::string cell;
     while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();  // a trailing empty field
     return cells;
   }
   std::size_t index(const std::string& column) const {
