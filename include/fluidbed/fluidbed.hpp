@@ -3,4 +3,5 @@
 
 #include "drag/any_drag_law.hpp"
 #include "settling.hpp"
+#include "elastic.hpp"
 #include "moments.hpp"

@@ -1,0 +1,285 @@
+// fluidbed — linear stability of homogeneous fluidization and the minimum bubbling point
+// (seed 000 §4.6.1; note seed000-closures §8.4–8.5).
+//
+// One-dimensional two-fluid model, x upward, particle stresses neglected, interaction force =
+// buoyancy + drag + elastic force. Linearising about the homogeneous state (ε̄, particles at
+// rest, u_s = u_t ε̄^n_e) gives for the voidage perturbation ε̂ (eq. 4.33):
+//
+//   ∂²ε̂/∂t² − u_d² ∂²ε̂/∂x² + K (∂ε̂/∂t + u_k ∂ε̂/∂x) = 0
+//
+//   u_k = u_t n_e (1 − ε) ε^(n_e − 1)     kinematic wave speed (eq. 4.27)
+//   u_d = √(E^e/ρ_p)                      dynamic wave speed (eq. 4.31), E^e the equilibrium
+//                                         modulus of the model (elastic_modulus.hpp)
+//   K   = (ρ_p − ρ_f) g C (2 − D)/(ρ_p u_s)  damping of the Mazzei–Lettieri drag, C and D at
+//                                         (ε, Re_t) (eq. 4.31 with A of eq. 4.26)
+//
+// Seed eq. 4.26 prints A and B without the factor C(ε, Re_t); the finite-difference
+// linearisation of the drag (tests/reference/stability_reference.py) and the H of eq. 3.109
+// both contain it. C cancels in u_k = (1 − ε) A/B, so the threshold is unaffected, but the
+// printed K, and every growth rate, would be too large by 1/C. K here includes C.
+//
+// The homogeneous state is stable iff u_d > u_k. The stability functions
+// S = 1 − u_d/u_k are negative while stable (eqs. 3.76, 4.37, 4.36):
+//   S_f = 1 − [(3.2/n_e²)(d g/u_t²)(Δρ/ρ_p) ε^(2(1−n_e))/(1 − ε)]^½        Foscolo–Gibilaro
+//   S_j = 1 − [(3.2/n_e²)(d g/u_t²)(Δρ/ρ_p) ε^(1−2n_e)/(1 − ε)]^½          Jean–Fan
+//   S_r = 1 − [−(2H/(3n_e²))(d g/u_t²)(Δρ/ρ_p) ε^(2(1−n_e))/(1 − ε)]^½     Mazzei–Lettieri
+// with u_t Dallavalle's terminal velocity and n_e = n_e(Re_t) (seed eq. 3.24), as seed 000
+// uses them (Table 4.6 is reproduced with exactly these).
+//
+// S is negative in the packed range, positive in a middle band (bubbling) and negative again
+// as ε → 1, where u_d/u_k ∝ (1 − ε)^−½: there are two roots. The lower one is the minimum
+// bubbling voidage ε_mb; the upper one (re-stabilisation, near ε ≈ 0.99–0.9999) is reported
+// separately. For fine powders S may stay negative everywhere (Table 4.6 powder 10 with
+// Jean–Fan and Mazzei–Lettieri): no transition is predicted.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "../core/config.hpp"
+#include "../core/errors.hpp"
+#include "../properties.hpp"
+#include "../settling/richardson_zaki.hpp"
+#include "../settling/terminal_velocity.hpp"
+#include "elastic_modulus.hpp"
+
+namespace fluidbed::elastic {
+
+// A homogeneous suspension and the single-particle data its stability depends on.
+template <class T>
+struct HomogeneousSuspension {
+  Fluid<T> fluid;
+  Particles<T> particles;
+  T gravity = T(standard_gravity);
+  T terminal_velocity;  // u_t [m s⁻¹], Dallavalle
+  T terminal_reynolds;  // Re_t = ρ_f u_t d/μ_f
+  T exponent;           // n_e(Re_t), seed eq. 3.24
+};
+
+// The suspension as seed 000 §4.6 sets it up: Dallavalle u_t (eq. 3.51) and n_e(Re_t) of
+// eq. 3.24. Preconditions: positive properties, ρ_p > ρ_f (a fluidized, not a floating, bed).
+template <class T>
+HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Particles<T>& particles,
+                                                const T& gravity = T(standard_gravity)) {
+  HomogeneousSuspension<T> s{fluid, particles, gravity, T(0), T(0), T(0)};
+  s.terminal_velocity = settling::terminal_velocity_dallavalle(fluid, particles, gravity);
+  s.terminal_reynolds = terminal_reynolds(fluid, particles.diameter, s.terminal_velocity);
+  s.exponent = settling::richardson_zaki_exponent_mazzei(s.terminal_reynolds);
+  return s;
+}
+
+// The same with every argument validated (std::domain_error naming argument and value).
+template <class T>
+HomogeneousSuspension<T> homogeneous_suspension_checked(const Fluid<T>& fluid, const Particles<T>& particles,
+                                                        const T& gravity = T(standard_gravity)) {
+  settling::detail::validate_settling("homogeneous_suspension", fluid, particles, gravity);
+  if (!(particles.density > fluid.density))
+    fluidbed::detail::throw_domain_error("homogeneous_suspension", "particles.density", particles.density,
+                                         "must exceed fluid.density");
+  return homogeneous_suspension(fluid, particles, gravity);
+}
+
+// The equilibrium modulus E^e(ε) of a model for this suspension [Pa]. S may be Dual in ε.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+  switch (model) {
+    case ElasticModel::foscolo_gibilaro: return foscolo_gibilaro_modulus(voidage, s.fluid, s.particles, s.gravity);
+    case ElasticModel::jean_fan: return jean_fan_modulus(voidage, s.fluid, s.particles, s.gravity);
+    case ElasticModel::mazzei_lettieri: break;
+  }
+  return mazzei_lettieri_equilibrium_modulus(voidage, s.fluid, s.particles, s.terminal_reynolds, s.gravity);
+}
+
+// u_k = u_t n_e (1 − ε) ε^(n_e − 1) = (1 − ε) du_s/dε along Richardson–Zaki (eq. 4.27) [m s⁻¹].
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S kinematic_wave_speed(const HomogeneousSuspension<T>& s, const S& voidage) {
+  using std::pow;
+  return s.terminal_velocity * s.exponent * (1.0 - voidage) * pow(voidage, s.exponent - T(1));
+}
+
+// u_d = √(E^e/ρ_p) (eq. 4.31) [m s⁻¹].
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S dynamic_wave_speed(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+  using std::sqrt;
+  return sqrt(equilibrium_modulus(model, s, voidage) / s.particles.density);
+}
+
+// K = (ρ_p − ρ_f) g C (2 − D)/(ρ_p u_s), u_s = u_t ε^n_e [s⁻¹]: the relaxation rate of the
+// particle velocity under the Mazzei–Lettieri drag (eq. 4.31 with the C that eq. 4.26 omits).
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voidage) {
+  using std::pow;
+  const auto f = mazzei_lettieri_functions(voidage, S(s.terminal_reynolds));
+  const S superficial = s.terminal_velocity * pow(voidage, s.exponent);
+  return (s.particles.density - s.fluid.density) * s.gravity * f.reynolds_factor * (2.0 - f.drag_factor) /
+         (s.particles.density * superficial);
+}
+
+// S = 1 − u_d/u_k: S_f, S_j or S_r (eqs. 3.76, 4.37, 4.36); the state is stable while S < 0.
+// −∞ at ε = 1.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S stability_function(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+  return 1.0 - dynamic_wave_speed(model, s, voidage) / kinematic_wave_speed(s, voidage);
+}
+
+// ---------------------------------------------------------------- waves (eqs. 4.34–4.35)
+
+template <class T>
+struct WaveSpeeds {
+  T kinematic;  // u_k [m s⁻¹]
+  T dynamic;    // u_d [m s⁻¹]
+  T damping;    // K [s⁻¹]
+};
+
+template <class T>
+WaveSpeeds<T> wave_speeds(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+  return {kinematic_wave_speed(s, voidage), dynamic_wave_speed(model, s, voidage), damping(s, voidage)};
+}
+
+// A voidage wave ε̂ = ε̂_a exp[a t + i k (x − ν t)] (eq. 4.34).
+template <class T>
+struct Wave {
+  T growth_rate;  // a [s⁻¹]; the wave grows if a > 0
+  T velocity;     // ν [m s⁻¹]
+};
+
+// The wave of wavenumber k > 0 [m⁻¹]: with ε̂ ∝ exp(σ t + i k x), eq. 4.33 gives
+// σ² + K σ + u_d² k² + i K u_k k = 0; the root with the larger real part (the least damped)
+// is σ = [−K + √(K² − 4 u_d² k² − 4 i K u_k k)]/2, so a = Re σ and ν = −Im σ/k. Long waves
+// travel at u_k, short ones at u_d; every k decays iff u_d > u_k.
+template <class T>
+Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber) {
+  const std::complex<T> discriminant(w.damping * w.damping - T(4) * w.dynamic * w.dynamic * wavenumber * wavenumber,
+                                     -T(4) * w.damping * w.kinematic * wavenumber);
+  const std::complex<T> sigma = (-w.damping + std::sqrt(discriminant)) / T(2);
+  return {sigma.real(), -sigma.imag() / wavenumber};
+}
+
+// Eq. 4.35, a wave of velocity ν: a = K (u_k − ν)/(2ν).
+template <class T>
+T growth_rate_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
+  return w.damping * (w.kinematic - velocity) / (T(2) * velocity);
+}
+
+// Eq. 4.35, a wave of velocity ν: k² = [K²/(4ν²)] (u_k² − ν²)/(ν² − u_d²). Negative where no
+// wave of that velocity exists (ν outside the interval between u_d and u_k).
+template <class T>
+T squared_wavenumber_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
+  const T v2 = velocity * velocity;
+  return w.damping * w.damping / (T(4) * v2) * (w.kinematic * w.kinematic - v2) / (v2 - w.dynamic * w.dynamic);
+}
+
+// ---------------------------------------------------------------- minimum bubbling point
+
+// Where the stability function is searched: lower <= ε <= upper. The default lower bound is
+// below any packed bed (Foscolo–Gibilaro puts the transition of the coarser FCC powders of
+// Table 4.6 near ε = 0.36); upper = 1 searches up to 1 − 1e-15.
+template <class T>
+struct VoidageInterval {
+  T lower = T(0.30);
+  T upper = T(1);
+};
+
+enum class TransitionStatus {
+  transition,              // S < 0 at the lower bound and changes sign: bubbling_voidage is set
+  no_transition,           // S < 0 on the whole interval: homogeneous at every voidage
+  unstable_at_lower_bound  // S >= 0 already at the lower bound: the transition lies below it
+};
+
+template <class T>
+struct StabilityTransition {
+  TransitionStatus status = TransitionStatus::no_transition;
+  std::optional<T> bubbling_voidage;         // ε_mb, the lowest root of S
+  std::optional<T> bubbling_velocity;        // u_mb = u_t ε_mb^n_e [m s⁻¹] (Richardson–Zaki expansion)
+  std::optional<T> restabilisation_voidage;  // the upper root (S from + to −), if within the interval
+  T maximum_voidage = T(0);                  // where S is largest on the interval
+  T maximum_stability = T(0);                // that largest S
+};
+
+namespace detail {
+
+// S on the variable u = −ln(1 − ε), which spreads the whole range, down to 1 − ε = 1e-15
+// where the re-stabilisation root of coarse particles lies, over a uniform grid.
+template <class T>
+T voidage_of_log_gap(const T& u) {
+  using std::expm1;
+  return -expm1(-u);
+}
+
+template <class T>
+T log_gap_of_voidage(const T& voidage) {
+  using std::log1p;
+  return -log1p(-voidage);
+}
+
+}  // namespace detail
+
+// The minimum bubbling point of a model: the lowest root of S in the interval, the
+// superficial velocity there, the re-stabilisation root, and the maximum of S. S is sampled
+// on 2000 points uniform in −ln(1 − ε); its maximum is refined by Brent's method and every
+// root bracketed by the samples (or by the maximum, so that a positive band narrower than the
+// sampling is still found) is refined by TOMS 748 to full precision. Throws std::domain_error
+// unless 0 < lower < upper <= 1.
+template <class T>
+StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const HomogeneousSuspension<T>& s,
+                                              const VoidageInterval<T>& interval = {}) {
+  using std::pow;
+  require_in_open("minimum_bubbling_point", "interval.lower", interval.lower, T(0), T(1));
+  require_in_half_open("minimum_bubbling_point", "interval.upper", interval.upper, interval.lower, T(1));
+  const T stability_limit = std::min(interval.upper, T(1) - T(1e-15));
+  const auto stability = [&](const T& voidage) { return stability_function(model, s, voidage); };
+  constexpr int samples = 2000;
+  const T u_low = detail::log_gap_of_voidage(interval.lower), u_high = detail::log_gap_of_voidage(stability_limit);
+  std::vector<T> voidage(samples), value(samples);
+  for (int i = 0; i < samples; ++i) {
+    voidage[i] = i + 1 == samples ? stability_limit
+                                  : detail::voidage_of_log_gap(u_low + (u_high - u_low) * T(i) / T(samples - 1));
+    value[i] = stability(voidage[i]);
+  }
+  const int peak = int(std::max_element(value.begin(), value.end()) - value.begin());
+  StabilityTransition<T> out;
+  {
+    const T left = voidage[std::max(peak - 1, 0)], right = voidage[std::min(peak + 1, samples - 1)];
+    const auto [where, minus_value] = boost::math::tools::brent_find_minima(
+        [&](const T& e) { return -stability(e); }, left, right, std::numeric_limits<T>::digits / 2);
+    out.maximum_voidage = -minus_value > value[peak] ? where : voidage[peak];
+    out.maximum_stability = std::max(-minus_value, value[peak]);
+  }
+  const auto root = [&](T a, T b) {
+    std::uintmax_t iterations = 200;
+    const auto bracket = boost::math::tools::toms748_solve(stability, a, b, boost::math::tools::eps_tolerance<T>(),
+                                                           iterations);
+    return (bracket.first + bracket.second) / T(2);
+  };
+  // Brackets: between samples of opposite sign, or, when no sample is positive (a band
+  // narrower than the sampling), between the maximum and its neighbouring samples.
+  const bool positive_sample = value[peak] >= T(0);
+  const int below_peak = std::clamp(
+      int(std::lower_bound(voidage.begin(), voidage.end(), out.maximum_voidage) - voidage.begin()) - 1, 0, samples - 2);
+  if (value[0] >= T(0)) {
+    out.status = TransitionStatus::unstable_at_lower_bound;
+  } else if (out.maximum_stability > T(0)) {
+    out.status = TransitionStatus::transition;
+    int i = 0;
+    while (positive_sample && value[i + 1] < T(0)) ++i;  // stops at the first sign change, at the latest at the peak
+    out.bubbling_voidage = positive_sample ? root(voidage[i], voidage[i + 1]) : root(voidage[below_peak], out.maximum_voidage);
+    out.bubbling_velocity = s.terminal_velocity * pow(*out.bubbling_voidage, s.exponent);
+  }
+  if (out.maximum_stability > T(0) && value[samples - 1] < T(0)) {
+    int j = samples - 1;
+    while (positive_sample && value[j - 1] < T(0)) --j;  // the last sign change, at the earliest at the peak
+    out.restabilisation_voidage =
+        positive_sample ? root(voidage[j - 1], voidage[j]) : root(out.maximum_voidage, voidage[below_peak + 1]);
+  }
+  return out;
+}
+
+}  // namespace fluidbed::elastic
