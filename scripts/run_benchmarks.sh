@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the microbenchmarks with optimisation and runs them; prints ns per cell and the
-# ratio of every drag law to Wen–Yu, and of every moment-inversion path to a generic
-# (dynamic Eigen, dense eigen-solver) baseline, each measured in the same run. Extra arguments go to Google
+# ratio of every drag law to Wen–Yu, of every moment-inversion path to a generic (dynamic
+# Eigen, dense eigen-solver) baseline, and of drag + elastic force to the drag alone, each
+# measured in the same run. Extra arguments go to Google
 # Benchmark (e.g. --benchmark_filter=Mazzei).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,3 +12,4 @@ cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DFLUIDBED_BUILD_T
 cmake --build build/bench -j "$(nproc)"
 ./build/bench/bench/fluidbed_drag_bench --benchmark_repetitions=5 "$@"
 ./build/bench/bench/fluidbed_moments_bench --benchmark_repetitions=5 "$@"
+./build/bench/bench/fluidbed_elastic_bench --benchmark_repetitions=5 "$@"

@@ -45,3 +45,24 @@ TEST_CASE("README moment-inversion example compiles and inverts its log-normal s
   // moments carry 5 digits.
   CHECK(r.quadrature.nodes[1] == doctest::Approx(125.2e-6).epsilon(0.01));
 }
+
+TEST_CASE("README elastic-force and stability example compiles and gives the quoted numbers") {
+  using namespace fluidbed::elastic;
+
+  // per cell: drag and its elastic part (eq. 3.116), one Re* solve for both
+  const auto d = mazzei_lettieri_drag_and_sensitivity(0.55, 0.12, {1.2, 1.8e-5}, 150e-6);
+  const fluidbed::Vector3<double> slip{0.0, 0.02, 0.12}, grad_eps{0.0, 0.0, 4.0};  // u_f − v_p, ∇ε
+  const auto drag = fluidbed::scaled(d.beta, slip);                    // classical buoyancy
+  const auto elastic = elastic_force(drag, grad_eps, d.sensitivity, 150e-6);
+
+  // once per material: where does a homogeneous bed of this powder start to bubble?
+  const auto bed = homogeneous_suspension<double>({1.205, 1.81e-5}, {1210.0, 137e-6});
+  const auto t = minimum_bubbling_point(ElasticModel::mazzei_lettieri, bed);
+  if (t.bubbling_voidage) { /* ε_mb = 0.401, u_mb = *t.bubbling_velocity = 1.15 cm/s */ }
+
+  REQUIRE(t.bubbling_voidage.has_value());
+  CHECK(*t.bubbling_voidage == doctest::Approx(0.401).epsilon(2e-3));
+  CHECK(*t.bubbling_velocity == doctest::Approx(0.0115).epsilon(5e-3));
+  CHECK(elastic[2] / drag[2] == doctest::Approx(elastic[1] / drag[1]).epsilon(1e-12));  // along the drag
+  CHECK(elastic[2] > 0);  // voidage rising along the drag increases it
+}
