@@ -78,21 +78,35 @@ struct MazzeiLettieriFunctions {
   S voidage_sensitivity;  // H = (∂F/∂ε)/F at fixed superficial slip
 };
 
+namespace detail {
+
+// The Table 3.1 algebra from x = 0.175 Re*^¾, √Re*, ln ε and ε; N is left to the caller
+// (it needs Re* itself). Shared by mazzei_lettieri_functions and the one-solve hot path
+// mazzei_lettieri_drag_and_sensitivity, which has x and √Re* from the Re* solve.
+template <class S>
+FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> table_3_1_functions(const S& voidage, const S& log_voidage,
+                                                                    const S& scaled_power, const S& root_re_star) {
+  const S one_plus_x = 1.0 + scaled_power;
+  MazzeiLettieriFunctions<S> f;
+  f.exponent = settling::detail::exponent_of_scaled_power(scaled_power);
+  f.exponent_slope = -1.8 * scaled_power / (one_plus_x * one_plus_x);  // Re* N, divided by Re* by the caller
+  f.reynolds_factor = 1.0 / (1.0 + f.exponent_slope * log_voidage);
+  f.drag_factor = 4.8 / (0.63 * root_re_star + 4.8);
+  f.voidage_sensitivity = f.reynolds_factor * f.exponent * (f.drag_factor - 2.0) / voidage;
+  return f;
+}
+
+}  // namespace detail
+
 template <class S>
 FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> mazzei_lettieri_functions(const S& voidage, const S& re_star) {
   using std::log;
   using std::pow;
   using std::sqrt;
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && !(re_star < 0));
-  const S x = 0.175 * pow(re_star, 0.75);
-  const S one_plus_x = 1.0 + x;
-  const S re_times_slope = -1.8 * x / (one_plus_x * one_plus_x);
-  MazzeiLettieriFunctions<S> f;
-  f.exponent = settling::richardson_zaki_exponent_mazzei(re_star);
-  f.exponent_slope = value_of(re_star) > 0 ? re_times_slope / re_star : S(-std::numeric_limits<double>::infinity());
-  f.reynolds_factor = 1.0 / (1.0 + re_times_slope * log(voidage));
-  f.drag_factor = 4.8 / (0.63 * sqrt(re_star) + 4.8);
-  f.voidage_sensitivity = f.reynolds_factor * f.exponent * (f.drag_factor - 2.0) / voidage;
+  MazzeiLettieriFunctions<S> f =
+      detail::table_3_1_functions(voidage, S(log(voidage)), S(0.175 * pow(re_star, 0.75)), S(sqrt(re_star)));
+  f.exponent_slope = value_of(re_star) > 0 ? f.exponent_slope / re_star : S(-std::numeric_limits<double>::infinity());
   return f;
 }
 
@@ -150,6 +164,19 @@ FLUIDBED_HOST_DEVICE S mazzei_lettieri_equilibrium_modulus(const S& voidage, con
   return modulus_from_sensitivity(voidage, h, fluid, particles, gravity);
 }
 
+// The equilibrium modulus of a model [Pa]; Re_t is used by Mazzei–Lettieri only.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const S& voidage, const Fluid<T>& fluid,
+                                           const Particles<T>& particles, const T& terminal_reynolds,
+                                           const T& gravity = T(standard_gravity)) {
+  switch (model) {
+    case ElasticModel::foscolo_gibilaro: return foscolo_gibilaro_modulus(voidage, fluid, particles, gravity);
+    case ElasticModel::jean_fan: return jean_fan_modulus(voidage, fluid, particles, gravity);
+    case ElasticModel::mazzei_lettieri: break;
+  }
+  return mazzei_lettieri_equilibrium_modulus(voidage, fluid, particles, terminal_reynolds, gravity);
+}
+
 // ---------------------------------------------------------------- off equilibrium
 
 // Re* of a state (eq. 3.53), through the Mazzei–Lettieri drag's solver. S may be Dual in
@@ -184,10 +211,9 @@ FLUIDBED_HOST_DEVICE DragAndSensitivity<T> mazzei_lettieri_drag_and_sensitivity(
   if (!(re > T(0)) || voidage == T(1))
     return {law.native_beta(voidage, slip, fluid, diameter), mazzei_lettieri_sensitivity(voidage, slip, fluid, diameter)};
   const auto state = drag::MazzeiLettieri::solve_state(re, voidage);
-  const T y = state.scaled_power, one_plus_y = T(1) + y;
-  const T c = T(1) / (T(1) - T(1.8) * y / (one_plus_y * one_plus_y) * state.log_voidage);
-  const T d = T(4.8) / (T(0.63) * state.root_reynolds * state.inverse_root_power + T(4.8));
-  return {drag::MazzeiLettieri::beta_of_state(state, voidage, fluid, diameter), c * state.exponent * (d - T(2)) / voidage};
+  const T root_re_star = state.root_reynolds * state.inverse_root_power;
+  return {drag::MazzeiLettieri::beta_of_state(state, voidage, fluid, diameter),
+          detail::table_3_1_functions(voidage, state.log_voidage, state.scaled_power, root_re_star).voidage_sensitivity};
 }
 
 // Mazzei–Lettieri modulus off equilibrium, eq. 3.110: E_r = −[4(1 − ε)/(π d²)] H F̂ with F̂ the
@@ -245,21 +271,15 @@ void validate_modulus_inputs(std::string_view function, const T& voidage, const 
 
 }  // namespace detail
 
-// The equilibrium modulus of a model [Pa], with every argument validated (std::domain_error
-// naming the argument and value). Re_t is needed by Mazzei–Lettieri only.
+// equilibrium_modulus with every argument validated (std::domain_error naming the argument
+// and value).
 template <class T>
 T equilibrium_modulus_checked(ElasticModel model, const T& voidage, const Fluid<T>& fluid,
                               const Particles<T>& particles, const T& terminal_reynolds,
                               const T& gravity = T(standard_gravity)) {
   detail::validate_modulus_inputs("equilibrium_modulus", voidage, fluid, particles, gravity);
   require_non_negative("equilibrium_modulus", "terminal_reynolds", terminal_reynolds);
-  switch (model) {
-    case ElasticModel::foscolo_gibilaro: return foscolo_gibilaro_modulus(voidage, fluid, particles, gravity);
-    case ElasticModel::jean_fan: return jean_fan_modulus(voidage, fluid, particles, gravity);
-    case ElasticModel::mazzei_lettieri:
-      return mazzei_lettieri_equilibrium_modulus(voidage, fluid, particles, terminal_reynolds, gravity);
-  }
-  return T(0);
+  return equilibrium_modulus(model, voidage, fluid, particles, terminal_reynolds, gravity);
 }
 
 }  // namespace fluidbed::elastic

@@ -80,22 +80,14 @@ HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Par
 template <class T>
 HomogeneousSuspension<T> homogeneous_suspension_checked(const Fluid<T>& fluid, const Particles<T>& particles,
                                                         const T& gravity = T(standard_gravity)) {
-  settling::detail::validate_settling("homogeneous_suspension", fluid, particles, gravity);
-  if (!(particles.density > fluid.density))
-    fluidbed::detail::throw_domain_error("homogeneous_suspension", "particles.density", particles.density,
-                                         "must exceed fluid.density");
+  settling::detail::validate_settling("homogeneous_suspension", fluid, particles, gravity);  // also ρ_p > ρ_f
   return homogeneous_suspension(fluid, particles, gravity);
 }
 
 // The equilibrium modulus E^e(ε) of a model for this suspension [Pa]. S may be Dual in ε.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
-  switch (model) {
-    case ElasticModel::foscolo_gibilaro: return foscolo_gibilaro_modulus(voidage, s.fluid, s.particles, s.gravity);
-    case ElasticModel::jean_fan: return jean_fan_modulus(voidage, s.fluid, s.particles, s.gravity);
-    case ElasticModel::mazzei_lettieri: break;
-  }
-  return mazzei_lettieri_equilibrium_modulus(voidage, s.fluid, s.particles, s.terminal_reynolds, s.gravity);
+  return equilibrium_modulus(model, voidage, s.fluid, s.particles, s.terminal_reynolds, s.gravity);
 }
 
 // u_k = u_t n_e (1 − ε) ε^(n_e − 1) = (1 − ε) du_s/dε along Richardson–Zaki (eq. 4.27) [m s⁻¹].
