@@ -66,3 +66,18 @@ TEST_CASE("README elastic-force and stability example compiles and gives the quo
   CHECK(elastic[2] / drag[2] == doctest::Approx(elastic[1] / drag[1]).epsilon(1e-12));  // along the drag
   CHECK(elastic[2] > 0);  // voidage rising along the drag increases it
 }
+
+TEST_CASE("README kinetic-theory example compiles and gives the seed-001 numbers") {
+  using namespace fluidbed::kinetic_theory;
+
+  const ConstitutiveSet ktgf{Ogawa{0.63}, LunPressure{}, SyamlalViscosity{}, SyamlalConductivity{}};
+  const GranularMaterial<double> glass{.diameter = 279e-6, .density = 2480.0, .restitution = 0.9};
+  const auto c = ktgf.with_derivatives(0.3, 0.01, glass);
+  const double theta = ktgf.algebraic_granular_temperature(0.3, glass, StrainRate<double>{0.0, 0.5}, 0.0);
+  const double p_f = JohnsonJacksonPressure{.min_fraction = 0.61, .max_packing = 0.63}(0.62);
+
+  CHECK(c.pressure.value == doctest::Approx(46.15050170899907).epsilon(1e-12));  // seed 001 §12.4 state A
+  CHECK(c.pressure.d_solid_fraction > 0);
+  CHECK(theta > 0);
+  CHECK(p_f == doctest::Approx(5e4).epsilon(1e-12));
+}

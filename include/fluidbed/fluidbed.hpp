@@ -4,4 +4,5 @@
 #include "drag/any_drag_law.hpp"
 #include "settling.hpp"
 #include "elastic.hpp"
+#include "kinetic_theory.hpp"
 #include "moments.hpp"

@@ -1,0 +1,18 @@
+// fluidbed — kinetic theory of granular flow: radial distribution functions (one class and
+// mixtures), granular pressure, shear and bulk viscosity, conductivity, dissipation, gas
+// exchange, friction, solid–solid drag, algebraic granular temperature, and the per-cell
+// ConstitutiveSet. Conventions: kinetic_theory/granular_state.hpp.
+#pragma once
+
+#include "kinetic_theory/algebraic_temperature.hpp"
+#include "kinetic_theory/conductivity.hpp"
+#include "kinetic_theory/constitutive_set.hpp"
+#include "kinetic_theory/dissipation.hpp"
+#include "kinetic_theory/friction.hpp"
+#include "kinetic_theory/gas_exchange.hpp"
+#include "kinetic_theory/granular_pressure.hpp"
+#include "kinetic_theory/granular_state.hpp"
+#include "kinetic_theory/mixture_radial_distribution.hpp"
+#include "kinetic_theory/radial_distribution.hpp"
+#include "kinetic_theory/solid_solid_drag.hpp"
+#include "kinetic_theory/viscosity.hpp"

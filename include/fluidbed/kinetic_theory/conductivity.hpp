@@ -1,0 +1,94 @@
+// fluidbed — granular conductivity κ_s [kg m⁻¹ s⁻¹] (the flux of granular energy is
+// −κ_s ∇Θ), per unit volume of suspension in every seed.
+//
+// Shape: law(φ, Θ, g0, material) → κ ≥ 0 = law.kinetic(...) + law.collisional(...),
+// templated on the scalar. Every form is ∝ √Θ (∂κ/∂Θ = κ/(2Θ), +∞ at Θ = 0).
+// Preconditions: φ ∈ [0, 1), Θ ≥ 0, material as in granular_state.hpp;
+// HrenyaSinclairConductivity also length_scale > 0.
+#pragma once
+
+#include <cmath>
+#include <string_view>
+
+#include "granular_state.hpp"
+#include "viscosity.hpp"
+
+namespace fluidbed::kinetic_theory {
+
+// The collisional conductivity 2 φ² ρ_s d g0 (1 + e) √(Θ/π): Gidaspow (1994), seed 001
+// eq. 31 (second term), seed 002 eq. 80; the collisional part of every law below (for
+// Syamlal's, the last term of seed 001 eq. 32 is this term).
+template <class Law>
+struct GidaspowCollisionalConductivity : KineticPlusCollisional<Law> {
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    return 2.0 * detail::collisional_transfer(phi, theta, g0, m);
+  }
+};
+
+// Gidaspow (1994), Multiphase Flow and Fluidization, ch. 9; seed 001 eq. 31, seed 002
+// eqs 80 and 83:
+//   κ_kin = 150 ρ_s d √(πΘ) / (384 (1 + e) g0) · [1 + (6/5) φ g0 (1 + e)]²
+// (= 2κ_dil/((1 + e) g0)[…]², κ_dil = (75/384) ρ_s d √(πΘ)). → 2κ_dil/(1 + e) as φ → 0.
+struct GidaspowConductivity : GidaspowCollisionalConductivity<GidaspowConductivity> {
+  constexpr std::string_view name() const { return "Gidaspow"; }
+  constexpr std::string_view reference() const {
+    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T one_plus_e = 1.0 + m.restitution;
+    const S bracket = 1.0 + (1.2 * one_plus_e) * phi * g0;
+    return (150.0 / 384.0 * detail::sqrt_pi * m.density * m.diameter / one_plus_e) * sqrt(theta) * bracket * bracket /
+           g0;
+  }
+};
+
+// Syamlal, Rogers & O'Brien (1993), MFIX Theory Guide; seed 001 eqs 32–33, η = (1 + e)/2:
+//   κ = 15 ρ_s d φ √(πΘ) / (4 (41 − 33η)) · [1 + (12/5) η² (4η − 3) φ g0
+//                                            + (16/(15π)) (41 − 33η) η φ g0],
+// whose last term is the collisional conductivity; kinetic = the rest. → 0 as φ → 0.
+struct SyamlalConductivity : GidaspowCollisionalConductivity<SyamlalConductivity> {
+  constexpr std::string_view name() const { return "Syamlal"; }
+  constexpr std::string_view reference() const {
+    return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T eta = 0.5 * (1.0 + m.restitution);
+    const S bracket = 1.0 + (2.4 * eta * eta * (4.0 * eta - 3.0)) * phi * g0;
+    return (15.0 * detail::sqrt_pi * m.density * m.diameter / (4.0 * (41.0 - 33.0 * eta))) * phi * sqrt(theta) *
+           bracket;
+  }
+};
+
+// Hrenya & Sinclair (1997), AIChE J. 43, 853–869, as in OpenFOAM's current
+// HrenyaSinclairConductivity (older OpenFOAM versions omit g0 in the second term), with
+// D = 49/16 − 33e/16 and λ as in HrenyaSinclairViscosity:
+//   κ_kin = ρ_s d √Θ [ (9/32) √π g0 (1+e)² (2e−1) φ²/D
+//                     + (15/16) √π φ (e²/2 + e/4 − 3/4 + λ)/(D λ)
+//                     + (25/64) √π / ((1+e) D λ g0) ].
+struct HrenyaSinclairConductivity : GidaspowCollisionalConductivity<HrenyaSinclairConductivity> {
+  double length_scale;  // L [m]
+
+  constexpr explicit HrenyaSinclairConductivity(double length) : length_scale(length) {}
+  constexpr std::string_view name() const { return "HrenyaSinclair"; }
+  constexpr std::string_view reference() const {
+    return "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T e = m.restitution, d_factor = 49.0 / 16.0 - 33.0 / 16.0 * e;
+    const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
+    const S bracket =
+        (9.0 / 32.0 * detail::sqrt_pi * (1.0 + e) * (1.0 + e) * (2.0 * e - 1.0) / d_factor) * g0 * phi * phi +
+        (15.0 / 16.0 * detail::sqrt_pi / d_factor) * phi * (0.5 * e * e + 0.25 * e - 0.75 + lambda) / lambda +
+        (25.0 / 64.0 * detail::sqrt_pi / ((1.0 + e) * d_factor)) / (lambda * g0);
+    return (m.density * m.diameter) * sqrt(theta) * bracket;
+  }
+};
+
+}  // namespace fluidbed::kinetic_theory

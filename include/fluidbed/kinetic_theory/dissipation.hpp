@@ -1,0 +1,37 @@
+// fluidbed — collisional dissipation of granular energy γ [W m⁻³], a positive sink: it
+// enters the granular energy balance as −γ (granular_state.hpp).
+//
+// Shape: law(φ, Θ, g0, material) → γ ≥ 0, templated on the scalar; ∝ Θ^(3/2), so
+// ∂γ/∂Θ = (3/2) γ/Θ, 0 at Θ = 0. Preconditions as in granular_state.hpp.
+#pragma once
+
+#include <cmath>
+#include <string_view>
+
+#include "granular_state.hpp"
+
+namespace fluidbed::kinetic_theory {
+
+// Lun, Savage, Jeffrey & Chepurniy (1984), J. Fluid Mech. 140, 223–256,
+// doi:10.1017/S0022112084000586:
+//   γ = 12 (1 − e²) g0 φ² ρ_s Θ^(3/2) / (d √π).
+// Seed 001 eq. 34 prints (1 + e²): that dissipates energy in elastic collisions and is
+// 9.5 times too large at e = 0.9 (tested). It equals seed 002's γ at ∇·u = 0 (the
+// Jenkins–Savage compression term −3(1 − e²) g0 φ² ρ_s Θ ∇·u is not included), MFiX's
+// (48/√π) η(1 − η) ρ_s φ² g0 Θ^(3/2)/d, and seed 004's binary γ_i for one class.
+struct LunDissipation {
+  constexpr std::string_view name() const { return "Lun"; }
+  constexpr std::string_view reference() const {
+    return "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
+           "doi:10.1017/S0022112084000586";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T e = m.restitution;
+    return (12.0 * (1.0 - e * e) * m.density / (m.diameter * detail::sqrt_pi)) * (g0 * phi * phi) *
+           (theta * sqrt(theta));
+  }
+};
+
+}  // namespace fluidbed::kinetic_theory

@@ -1,0 +1,223 @@
+// fluidbed — radial distribution functions at contact g0(φ), one solids class.
+//
+// Every stress, viscosity, conductivity and dissipation of kinetic theory is proportional
+// to g0 (or to 1/g0), and the forms in use differ by a factor of 3 at φ = 0.55 (seed-004
+// note Part 4 §1: Percus–Yevick 6.30, Carnahan–Starling 7.96, Ma–Ahmadi 8.77, Ogawa
+// (φ_max = 0.63) 22.6, Lathouwers–Bellan (0.64) 103). So g0 is a separate, pluggable
+// object: call it with φ (a Dual φ gives dg0/dφ) and pass its value to the closures.
+//
+// Shape: g0(φ) templated on the scalar; name(); reference(). φ ∈ [0, 1) is the
+// precondition of every form. Every form → 1 as φ → 0 except GidaspowRadialDistribution
+// (→ 3/5, as published). The cube-root forms approach 1 like 1 + (φ/φ_max)^(1/3): their
+// slope is +∞ at φ = 0.
+//
+// Behaviour at and beyond maximum packing. The forms with a packing limit φ_max diverge
+// there. Codes cap φ (MFiX Ma–Ahmadi at 0.643), freeze g0 (OpenFOAM SinclairJackson above
+// alphaMinFriction) or do nothing (OpenFOAM LunSavage: NaN beyond φ_max), and the capped
+// forms' derivatives are then not the derivatives of the values (anchors note §2.13).
+// Here the singular factor is continued linearly beyond φ_c = φ_max − packing_margin
+// (default 0.01): g0 is finite for every φ < 1, continuous with a continuous slope,
+// increasing, and its derivative is exactly that of the continued function. Below φ_c
+// every form is the published formula.
+#pragma once
+
+#include <cmath>
+#include <string_view>
+
+#include "granular_state.hpp"
+
+namespace fluidbed::kinetic_theory {
+
+// The default distance below φ_max where singular factors are continued linearly.
+inline constexpr double default_packing_margin = 0.01;
+
+// Carnahan & Starling (1969), J. Chem. Phys. 51, 635–636, doi:10.1063/1.1672048;
+// seed 002 eq. 53: g0 = (1 − φ/2)/(1 − φ)³. Hard-sphere fluid, accurate to the freezing
+// point φ ≈ 0.49 and used up to 0.55 (seed 002 Fig. 21); no packing limit (13.5 at 0.63),
+// finite for φ < 1.
+struct CarnahanStarling {
+  constexpr std::string_view name() const { return "CarnahanStarling"; }
+  constexpr std::string_view reference() const {
+    return "Carnahan, N.F. & Starling, K.E. (1969) J. Chem. Phys. 51, 635-636, doi:10.1063/1.1672048";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
+    const S gap = 1.0 - phi;
+    return (1.0 - 0.5 * phi) / (gap * gap * gap);
+  }
+};
+
+// Percus–Yevick contact value (Lebowitz 1964, Phys. Rev. 133, A895–A899,
+// doi:10.1103/PhysRev.133.A895, one class): g0 = (1 + φ/2)/(1 − φ)². The one-class limit of
+// the Lebowitz mixture form (seed 000 eq. 6.16); finite for φ < 1.
+struct PercusYevick {
+  constexpr std::string_view name() const { return "PercusYevick"; }
+  constexpr std::string_view reference() const {
+    return "Lebowitz, J.L. (1964) Phys. Rev. 133, A895-A899, doi:10.1103/PhysRev.133.A895";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
+    const S gap = 1.0 - phi;
+    return (1.0 + 0.5 * phi) / (gap * gap);
+  }
+};
+
+// Lun & Savage (1986), Acta Mech. 63, 15–44 (OpenFOAM LunSavage):
+// g0 = (1 − φ/φ_max)^(−2.5 φ_max), continued linearly above φ_max − packing_margin.
+struct LunSavage {
+  double max_packing;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "LunSavage"; }
+  constexpr std::string_view reference() const { return "Lun, C.K.K. & Savage, S.B. (1986) Acta Mech. 63, 15-44"; }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    using std::pow;
+    const double exponent = -2.5 * max_packing, m = max_packing;
+    return detail::continued_linearly_above(phi, m - packing_margin,
+                                            [&](const auto& x) { return pow(1.0 - x / m, exponent); });
+  }
+};
+
+namespace detail {
+
+// 1/(1 − (φ/φ_max)^(1/3)), the cube-root form shared by Ogawa, Sinclair–Jackson and
+// Gidaspow, continued linearly above φ_max − margin.
+template <class S>
+FLUIDBED_HOST_DEVICE S cube_root_contact_factor(const S& phi, double max_packing, double margin) {
+  using std::cbrt;
+  return continued_linearly_above(phi, max_packing - margin,
+                                  [&](const auto& x) { return 1.0 / (1.0 - cbrt(x / max_packing)); });
+}
+
+}  // namespace detail
+
+// Ogawa, Umemura & Oshima (1980), Z. angew. Math. Phys. 31, 483–493; seed 001 eq. 24 (FLUENT calls it "Lun et al."):
+// g0 = 1/(1 − (φ/φ_max)^(1/3)), continued linearly above φ_max − packing_margin.
+// Seed 001 uses φ_max = 0.63.
+struct Ogawa {
+  double max_packing;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "Ogawa"; }
+  constexpr std::string_view reference() const {
+    return "Ogawa, S., Umemura, A. & Oshima, N. (1980) Z. angew. Math. Phys. 31, 483-493";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    return detail::cube_root_contact_factor(phi, max_packing, packing_margin);
+  }
+};
+
+// Sinclair & Jackson (1989), AIChE J. 35, 1473–1486, doi:10.1002/aic.690350908: the same
+// expression as Ogawa, 1/(1 − (φ/φ_max)^(1/3)). OpenFOAM's SinclairJackson also freezes
+// g0 above alphaMinFriction while its g0prime does not; here there is no freeze, only the
+// linear continuation above φ_max − packing_margin, with a consistent derivative.
+struct SinclairJackson {
+  double max_packing;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "SinclairJackson"; }
+  constexpr std::string_view reference() const {
+    return "Sinclair, J.L. & Jackson, R. (1989) AIChE J. 35, 1473-1486, doi:10.1002/aic.690350908";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    return detail::cube_root_contact_factor(phi, max_packing, packing_margin);
+  }
+};
+
+// Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press (SedFoam Gidaspow):
+// g0 = (3/5)/(1 − (φ/φ_max)^(1/3)). As published it tends to 3/5, not 1, as φ → 0; it is
+// offered for reproducing codes that use it, not as a dilute-consistent form.
+struct GidaspowRadialDistribution {
+  double max_packing;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "Gidaspow"; }
+  constexpr std::string_view reference() const {
+    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    return 0.6 * detail::cube_root_contact_factor(phi, max_packing, packing_margin);
+  }
+};
+
+// Ma & Ahmadi (1986), J. Chem. Phys. 84, 3449–3450; seed 002 eq. 77
+// with Table III (the Twente TFM):
+//   g0 = (1 + 2.5φ + 4.5904φ² + 4.515439φ³) / (1 − (φ/0.64356)³)^0.67802.
+// The anchors note's 4.5094 (MFiX) is a transposition of the published 4.5904. The
+// denominator factor is continued linearly above 0.64356 − packing_margin.
+struct MaAhmadi {
+  static constexpr double max_packing = 0.64356;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "MaAhmadi"; }
+  constexpr std::string_view reference() const { return "Ma, D. & Ahmadi, G. (1986) J. Chem. Phys. 84, 3449-3450"; }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    using std::pow;
+    const S polynomial = 1.0 + phi * (2.5 + phi * (4.5904 + phi * 4.515439));
+    const S packing = detail::continued_linearly_above(phi, max_packing - packing_margin, [](const auto& x) {
+      const auto r = x / max_packing;
+      return pow(1.0 - r * r * r, -0.67802);
+    });
+    return polynomial * packing;
+  }
+};
+
+namespace detail {
+
+// (1 − x/x_max)^(−power), continued linearly above x_max − margin: the factors of the
+// modified Mansoori form (Lathouwers–Bellan).
+template <class S>
+FLUIDBED_HOST_DEVICE S inverse_gap_power(const S& x, double max_packing, double margin, int power) {
+  return continued_linearly_above(x, max_packing - margin, [&](const auto& y) {
+    const auto inverse_gap = 1.0 / (1.0 - y / max_packing);
+    auto result = inverse_gap;
+    for (int i = 1; i < power; ++i) result = result * inverse_gap;
+    return result;
+  });
+}
+
+// The three factors 1/(1−x), 1/(1−x)², 1/(1−x)³ of the Mansoori form, with x = φ_t/φ_max.
+template <class S>
+struct MansooriFactors {
+  S first, second, third;
+};
+
+template <class S>
+FLUIDBED_HOST_DEVICE MansooriFactors<S> modified_mansoori_factors(const S& total_fraction, double max_packing,
+                                                                  double margin) {
+  return {inverse_gap_power(total_fraction, max_packing, margin, 1),
+          inverse_gap_power(total_fraction, max_packing, margin, 2),
+          inverse_gap_power(total_fraction, max_packing, margin, 3)};
+}
+
+}  // namespace detail
+
+// Lathouwers & Bellan (2001), Int. J. Multiphase Flow 27, 2155–2187; seed 004 (binary
+// h_ik) for one class: the Mansoori mixture form with the gas fraction replaced by
+// 1 − φ/φ_max,
+//   g0 = 1/(1 − x) + (3/2) φ/(1 − x)² + (1/2) φ²/(1 − x)³,   x = φ/φ_max.
+// Seed 004 prints the third term of h_ik as 8 r² ξ/(1 − x)²: dimensionally wrong (it has
+// units of length) — the Mansoori et al. (1971) term is 8 r² ξ²/(1 − x)³, which is what
+// reduces to Carnahan–Starling at φ_max = 1. Each factor (1 − x)^(−j) is continued linearly
+// above φ_max − packing_margin. Seed 004 uses φ_max = 0.64.
+struct LathouwersBellan {
+  double max_packing;
+  double packing_margin = default_packing_margin;
+
+  constexpr std::string_view name() const { return "LathouwersBellan"; }
+  constexpr std::string_view reference() const {
+    return "Lathouwers, D. & Bellan, J. (2001) Int. J. Multiphase Flow 27, 2155-2187";
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    const auto f = detail::modified_mansoori_factors(phi, max_packing, packing_margin);
+    return f.first + 1.5 * phi * f.second + 0.5 * phi * phi * f.third;
+  }
+};
+
+}  // namespace fluidbed::kinetic_theory

@@ -1,0 +1,128 @@
+// fluidbed — solids shear viscosity μ_s and bulk viscosity λ_s [Pa s], per unit volume of
+// suspension (FLUENT/seed 001 quote μ_s and λ_s per unit volume of the solids phase:
+// theirs = ours/φ).
+//
+// Shape: law(φ, Θ, g0, material) → μ ≥ 0, templated on the scalar; shear-viscosity laws
+// also give law.kinetic(...) and law.collisional(...). Every form is ∝ √Θ, so ∂μ/∂Θ =
+// μ/(2Θ), +∞ at Θ = 0 (the true derivative; the value is 0 there). Preconditions: φ ∈ [0, 1),
+// Θ ≥ 0, material as in granular_state.hpp; HrenyaSinclairViscosity also length_scale > 0.
+// Frictional viscosity: friction.hpp.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "granular_state.hpp"
+
+namespace fluidbed::kinetic_theory {
+
+namespace detail {
+
+// μ_dil = (5/96) ρ_s d √(πΘ): the dilute (Chapman–Enskog) viscosity, seed 002 eq. 72.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE S dilute_viscosity(const S& theta, const GranularMaterial<T>& m) {
+  using std::sqrt;
+  return (5.0 / 96.0 * sqrt_pi * m.density * m.diameter) * sqrt(theta);
+}
+
+// Hrenya & Sinclair's mean-free-path factor λ = 1 + d/(6√2 (φ + 10⁻⁵) L) (OpenFOAM's form;
+// the 10⁻⁵ keeps it finite at φ = 0), shared by their viscosity and conductivity.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const T& diameter, double length_scale) {
+  return 1.0 + diameter / (6.0 * std::numbers::sqrt2 * length_scale) / (phi + 1e-5);
+}
+
+}  // namespace detail
+
+// The collisional shear viscosity (4/5) φ² ρ_s d g0 (1 + e) √(Θ/π): Gidaspow (1994), seed 001
+// eq. 26 (× φ), seed 002 eq. 79 (second term). The collisional part of every law below.
+template <class Law>
+struct GidaspowCollisionalViscosity : KineticPlusCollisional<Law> {
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    return 0.8 * detail::collisional_transfer(phi, theta, g0, m);
+  }
+};
+
+// Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press, eqs 9.183 ff.; seed 002
+// eq. 82 (the "exact" y-form it equals):
+//   μ_kin = 2 μ_dil / ((1 + e) g0) · [1 + (4/5)(1 + e) g0 φ]²,   μ_dil = (5/96) ρ_s d √(πΘ).
+// Misprints: seed 001 eq. 27 has (3 − e) where (1 + e) belongs (the (3 − e) is Syamlal's);
+// seed 002 eq. 79 puts (1 + e) g0 under the square root and drops the factor 2. Both are
+// tested against this form. → 2 μ_dil/(1 + e) as φ → 0 (finite).
+struct GidaspowViscosity : GidaspowCollisionalViscosity<GidaspowViscosity> {
+  constexpr std::string_view name() const { return "Gidaspow"; }
+  constexpr std::string_view reference() const {
+    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    const T one_plus_e = 1.0 + m.restitution;
+    const S bracket = 1.0 + (0.8 * one_plus_e) * g0 * phi;
+    return 2.0 * detail::dilute_viscosity(theta, m) * bracket * bracket / (one_plus_e * g0);
+  }
+};
+
+// Syamlal, Rogers & O'Brien (1993), MFIX Theory Guide, DOE/METC-94/1004; seed 001 eq. 28
+// (× φ, the MFiX/OpenFOAM form):
+//   μ_kin = φ ρ_s d √(πΘ) / (6 (3 − e)) · [1 + (2/5)(1 + e)(3e − 1) φ g0],
+// plus Gidaspow's collisional part (OpenFOAM Syamlal). → 0 as φ → 0.
+struct SyamlalViscosity : GidaspowCollisionalViscosity<SyamlalViscosity> {
+  constexpr std::string_view name() const { return "Syamlal"; }
+  constexpr std::string_view reference() const {
+    return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T e = m.restitution;
+    const S bracket = 1.0 + (0.4 * (1.0 + e) * (3.0 * e - 1.0)) * phi * g0;
+    return (detail::sqrt_pi * m.density * m.diameter / (6.0 * (3.0 - e))) * phi * sqrt(theta) * bracket;
+  }
+};
+
+// Hrenya & Sinclair (1997), AIChE J. 43, 853–869, doi:10.1002/aic.690430402, as in
+// OpenFOAM's HrenyaSinclair: the mean free path is limited by a length L (e.g. the riser
+// diameter) through λ = 1 + d/(6√2 (φ + 10⁻⁵) L) (10⁻⁵: OpenFOAM's guard at φ = 0), and
+//   μ_kin = ρ_s d √Θ [ (√π/15) g0 (1+e)(3e−1) φ²/(3−e)
+//                     + (√π/6) φ (λ/2 + (3e−1)/4) / ((3−e) λ/2)
+//                     + (10/96) √π / ((1+e) ((3−e)/2) g0 λ) ],
+// plus Gidaspow's collisional part.
+struct HrenyaSinclairViscosity : GidaspowCollisionalViscosity<HrenyaSinclairViscosity> {
+  double length_scale;  // L [m]
+
+  constexpr explicit HrenyaSinclairViscosity(double length) : length_scale(length) {}
+  constexpr std::string_view name() const { return "HrenyaSinclair"; }
+  constexpr std::string_view reference() const {
+    return "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const T e = m.restitution, three_minus_e = 3.0 - e;
+    const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
+    const S bracket =
+        (detail::sqrt_pi / 15.0 * (1.0 + e) * (3.0 * e - 1.0) / three_minus_e) * g0 * phi * phi +
+        (detail::sqrt_pi / 6.0) * phi * (0.5 * lambda + 0.25 * (3.0 * e - 1.0)) / (0.5 * three_minus_e * lambda) +
+        (10.0 / 96.0 * detail::sqrt_pi / ((1.0 + e) * 0.5 * three_minus_e)) / (g0 * lambda);
+    return (m.density * m.diameter) * sqrt(theta) * bracket;
+  }
+};
+
+// Lun et al. (1984), J. Fluid Mech. 140, 223–256; seed 001 eq. 29 (× φ):
+//   λ_s = (4/3) φ² ρ_s d g0 (1 + e) √(Θ/π).
+// Seed 004's binary closure implies λ = (5/3) μ_coll, the same value for one class.
+struct LunBulkViscosity {
+  constexpr std::string_view name() const { return "Lun"; }
+  constexpr std::string_view reference() const {
+    return "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
+           "doi:10.1017/S0022112084000586";
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    return (4.0 / 3.0) * detail::collisional_transfer(phi, theta, g0, m);
+  }
+};
+
+}  // namespace fluidbed::kinetic_theory

@@ -1,0 +1,75 @@
+// Test helper: the kinetic-theory closures by the names the mpmath tables in
+// tests/reference/ use (ktgf_*.csv), evaluated for any scalar (double or Dual).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "fluidbed/kinetic_theory.hpp"
+
+namespace fluidbed::test {
+
+using kinetic_theory::GranularMaterial;
+
+// The one-class RDF `name` with packing parameter `max_packing` (ignored where fixed).
+template <class S>
+S radial_distribution(const std::string& name, const S& phi, double max_packing) {
+  using namespace kinetic_theory;
+  if (name == "carnahan_starling") return CarnahanStarling{}(phi);
+  if (name == "percus_yevick") return PercusYevick{}(phi);
+  if (name == "lun_savage") return LunSavage{max_packing}(phi);
+  if (name == "sinclair_jackson") return SinclairJackson{max_packing}(phi);
+  if (name == "ogawa") return Ogawa{max_packing}(phi);
+  if (name == "gidaspow") return GidaspowRadialDistribution{max_packing}(phi);
+  if (name == "ma_ahmadi") return MaAhmadi{}(phi);
+  if (name == "lathouwers_bellan") return LathouwersBellan{max_packing}(phi);
+  throw std::invalid_argument("no radial distribution " + name);
+}
+
+// The g0 of a constitutive row's variant "<author>:<rdf>": carnahan_starling, or ogawa
+// with φ_max = 0.63 (tests/reference/README.md).
+template <class S>
+S row_radial_distribution(const std::string& rdf, const S& phi) {
+  return radial_distribution(rdf, phi, 0.63);
+}
+
+// Constitutive function `function` of author `author` (the part of the variant before
+// ':'); `extra` is the Hrenya–Sinclair length L where it applies.
+template <class S>
+S constitutive(const std::string& function, const std::string& author, const S& phi, const S& theta, const S& g0,
+               const GranularMaterial<double>& m, double extra) {
+  using namespace kinetic_theory;
+  if (function == "granular_pressure") {
+    if (author == "lun") return LunPressure{}(phi, theta, g0, m);
+    if (author == "syamlal_rogers_obrien") return SyamlalRogersOBrienPressure{}(phi, theta, g0, m);
+    if (author == "ma_ahmadi") return AhmadiMaPressure{}(phi, theta, g0, m);
+  } else if (function == "shear_viscosity") {
+    if (author == "gidaspow") return GidaspowViscosity{}(phi, theta, g0, m);
+    if (author == "gidaspow_kinetic") return GidaspowViscosity{}.kinetic(phi, theta, g0, m);
+    if (author == "gidaspow_collisional") return GidaspowViscosity{}.collisional(phi, theta, g0, m);
+    if (author == "syamlal") return SyamlalViscosity{}(phi, theta, g0, m);
+    if (author == "syamlal_kinetic") return SyamlalViscosity{}.kinetic(phi, theta, g0, m);
+    if (author == "hrenya_sinclair") return HrenyaSinclairViscosity(extra)(phi, theta, g0, m);
+    if (author == "hrenya_sinclair_kinetic") return HrenyaSinclairViscosity(extra).kinetic(phi, theta, g0, m);
+  } else if (function == "bulk_viscosity") {
+    if (author == "lun") return LunBulkViscosity{}(phi, theta, g0, m);
+  } else if (function == "conductivity") {
+    if (author == "gidaspow") return GidaspowConductivity{}(phi, theta, g0, m);
+    if (author == "gidaspow_kinetic") return GidaspowConductivity{}.kinetic(phi, theta, g0, m);
+    if (author == "gidaspow_collisional") return GidaspowConductivity{}.collisional(phi, theta, g0, m);
+    if (author == "syamlal") return SyamlalConductivity{}(phi, theta, g0, m);
+    if (author == "hrenya_sinclair") return HrenyaSinclairConductivity(extra)(phi, theta, g0, m);
+  } else if (function == "dissipation") {
+    if (author == "lun") return LunDissipation{}(phi, theta, g0, m);
+  }
+  throw std::invalid_argument("no constitutive function " + function + " " + author);
+}
+
+// The author and the RDF of a variant "<author>:<rdf>".
+inline std::pair<std::string, std::string> split_variant(const std::string& variant) {
+  const auto colon = variant.find(':');
+  if (colon == std::string::npos) return {variant, ""};
+  return {variant.substr(0, colon), variant.substr(colon + 1)};
+}
+
+}  // namespace fluidbed::test
