@@ -15,22 +15,17 @@
 
 namespace fluidbed::kinetic_theory {
 
-// The collisional conductivity 2 φ² ρ_s d g0 (1 + e) √(Θ/π): Gidaspow (1994), seed 001
-// eq. 31 (second term), seed 002 eq. 80; the collisional part of every law below (for
-// Syamlal's, the last term of seed 001 eq. 32 is this term).
+// The collisional conductivity of every law below is Gidaspow's (1994), seed 001 eq. 31
+// (second term), seed 002 eq. 80: 2 φ² ρ_s d g0 (1 + e) √(Θ/π) (for Syamlal's, the last
+// term of seed 001 eq. 32 is this term).
 template <class Law>
-struct GidaspowCollisionalConductivity : KineticPlusCollisional<Law> {
-  template <class S, class T>
-  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    return 2.0 * detail::collisional_transfer(phi, theta, g0, m);
-  }
-};
+using WithGidaspowCollisionalConductivity = KineticPlusCollisional<Law, 2.0>;
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, ch. 9; seed 001 eq. 31, seed 002
 // eqs 80 and 83:
 //   κ_kin = 150 ρ_s d √(πΘ) / (384 (1 + e) g0) · [1 + (6/5) φ g0 (1 + e)]²
 // (= 2κ_dil/((1 + e) g0)[…]², κ_dil = (75/384) ρ_s d √(πΘ)). → 2κ_dil/(1 + e) as φ → 0.
-struct GidaspowConductivity : GidaspowCollisionalConductivity<GidaspowConductivity> {
+struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConductivity> {
   constexpr std::string_view name() const { return "Gidaspow"; }
   constexpr std::string_view reference() const {
     return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
@@ -49,7 +44,7 @@ struct GidaspowConductivity : GidaspowCollisionalConductivity<GidaspowConductivi
 //   κ = 15 ρ_s d φ √(πΘ) / (4 (41 − 33η)) · [1 + (12/5) η² (4η − 3) φ g0
 //                                            + (16/(15π)) (41 − 33η) η φ g0],
 // whose last term is the collisional conductivity; kinetic = the rest. → 0 as φ → 0.
-struct SyamlalConductivity : GidaspowCollisionalConductivity<SyamlalConductivity> {
+struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConductivity> {
   constexpr std::string_view name() const { return "Syamlal"; }
   constexpr std::string_view reference() const {
     return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
@@ -70,7 +65,7 @@ struct SyamlalConductivity : GidaspowCollisionalConductivity<SyamlalConductivity
 //   κ_kin = ρ_s d √Θ [ (9/32) √π g0 (1+e)² (2e−1) φ²/D
 //                     + (15/16) √π φ (e²/2 + e/4 − 3/4 + λ)/(D λ)
 //                     + (25/64) √π / ((1+e) D λ g0) ].
-struct HrenyaSinclairConductivity : GidaspowCollisionalConductivity<HrenyaSinclairConductivity> {
+struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSinclairConductivity> {
   double length_scale;  // L [m]
 
   constexpr explicit HrenyaSinclairConductivity(double length) : length_scale(length) {}

@@ -131,14 +131,18 @@ FLUIDBED_HOST_DEVICE S collisional_transfer(const S& phi, const S& theta, const 
 
 }  // namespace detail
 
-// The shape of a transport coefficient with a kinetic (streaming) and a collisional part:
-// Law provides kinetic(φ, Θ, g0, m) and collisional(φ, Θ, g0, m); the call is their sum.
-template <class Law>
+// The shape of a transport coefficient with a kinetic (streaming) and a collisional part,
+// the latter collisional_factor × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
+// viscosity: 4/5, conductivity: 2). Law provides kinetic(φ, Θ, g0, m); the call is the sum.
+template <class Law, double collisional_factor>
 struct KineticPlusCollisional {
   template <class S, class T>
+  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    return collisional_factor * detail::collisional_transfer(phi, theta, g0, m);
+  }
+  template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    const Law& law = static_cast<const Law&>(*this);
-    return law.kinetic(phi, theta, g0, m) + law.collisional(phi, theta, g0, m);
+    return static_cast<const Law&>(*this).kinetic(phi, theta, g0, m) + collisional(phi, theta, g0, m);
   }
 };
 

@@ -81,31 +81,33 @@ struct LunSavage {
 
 namespace detail {
 
-// 1/(1 − (φ/φ_max)^(1/3)), the cube-root form shared by Ogawa, Sinclair–Jackson and
-// Gidaspow, continued linearly above φ_max − margin.
-template <class S>
-FLUIDBED_HOST_DEVICE S cube_root_contact_factor(const S& phi, double max_packing, double margin) {
-  using std::cbrt;
-  return continued_linearly_above(phi, max_packing - margin,
-                                  [&](const auto& x) { return 1.0 / (1.0 - cbrt(x / max_packing)); });
-}
+// g0 = prefactor/(1 − (φ/φ_max)^(1/3)), the cube-root form shared by Ogawa,
+// Sinclair–Jackson and Gidaspow, continued linearly above φ_max − packing_margin.
+template <double prefactor>
+struct CubeRootContact {
+  double max_packing;
+  double packing_margin;
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    using std::cbrt;
+    const double m = max_packing;
+    return prefactor *
+           continued_linearly_above(phi, m - packing_margin, [&](const auto& x) { return 1.0 / (1.0 - cbrt(x / m)); });
+  }
+};
 
 }  // namespace detail
 
-// Ogawa, Umemura & Oshima (1980), Z. angew. Math. Phys. 31, 483–493; seed 001 eq. 24 (FLUENT calls it "Lun et al."):
-// g0 = 1/(1 − (φ/φ_max)^(1/3)), continued linearly above φ_max − packing_margin.
-// Seed 001 uses φ_max = 0.63.
-struct Ogawa {
-  double max_packing;
-  double packing_margin = default_packing_margin;
-
+// Ogawa, Umemura & Oshima (1980), Z. angew. Math. Phys. 31, 483–493; seed 001 eq. 24
+// (FLUENT calls it "Lun et al."): g0 = 1/(1 − (φ/φ_max)^(1/3)), continued linearly above
+// φ_max − packing_margin. Seed 001 uses φ_max = 0.63.
+struct Ogawa : detail::CubeRootContact<1.0> {
+  constexpr explicit Ogawa(double max_packing, double packing_margin = default_packing_margin)
+      : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "Ogawa"; }
   constexpr std::string_view reference() const {
     return "Ogawa, S., Umemura, A. & Oshima, N. (1980) Z. angew. Math. Phys. 31, 483-493";
-  }
-  template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
-    return detail::cube_root_contact_factor(phi, max_packing, packing_margin);
   }
 };
 
@@ -113,34 +115,24 @@ struct Ogawa {
 // expression as Ogawa, 1/(1 − (φ/φ_max)^(1/3)). OpenFOAM's SinclairJackson also freezes
 // g0 above alphaMinFriction while its g0prime does not; here there is no freeze, only the
 // linear continuation above φ_max − packing_margin, with a consistent derivative.
-struct SinclairJackson {
-  double max_packing;
-  double packing_margin = default_packing_margin;
-
+struct SinclairJackson : detail::CubeRootContact<1.0> {
+  constexpr explicit SinclairJackson(double max_packing, double packing_margin = default_packing_margin)
+      : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "SinclairJackson"; }
   constexpr std::string_view reference() const {
     return "Sinclair, J.L. & Jackson, R. (1989) AIChE J. 35, 1473-1486, doi:10.1002/aic.690350908";
-  }
-  template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
-    return detail::cube_root_contact_factor(phi, max_packing, packing_margin);
   }
 };
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press (SedFoam Gidaspow):
 // g0 = (3/5)/(1 − (φ/φ_max)^(1/3)). As published it tends to 3/5, not 1, as φ → 0; it is
 // offered for reproducing codes that use it, not as a dilute-consistent form.
-struct GidaspowRadialDistribution {
-  double max_packing;
-  double packing_margin = default_packing_margin;
-
+struct GidaspowRadialDistribution : detail::CubeRootContact<0.6> {
+  constexpr explicit GidaspowRadialDistribution(double max_packing, double packing_margin = default_packing_margin)
+      : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "Gidaspow"; }
   constexpr std::string_view reference() const {
     return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
-  }
-  template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
-    return 0.6 * detail::cube_root_contact_factor(phi, max_packing, packing_margin);
   }
 };
 

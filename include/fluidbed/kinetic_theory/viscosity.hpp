@@ -35,15 +35,10 @@ FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const
 
 }  // namespace detail
 
-// The collisional shear viscosity (4/5) φ² ρ_s d g0 (1 + e) √(Θ/π): Gidaspow (1994), seed 001
-// eq. 26 (× φ), seed 002 eq. 79 (second term). The collisional part of every law below.
+// The collisional shear viscosity of every law below is Gidaspow's (1994), seed 001 eq. 26
+// (× φ), seed 002 eq. 79 (second term): (4/5) φ² ρ_s d g0 (1 + e) √(Θ/π).
 template <class Law>
-struct GidaspowCollisionalViscosity : KineticPlusCollisional<Law> {
-  template <class S, class T>
-  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    return 0.8 * detail::collisional_transfer(phi, theta, g0, m);
-  }
-};
+using WithGidaspowCollisionalViscosity = KineticPlusCollisional<Law, 0.8>;
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press, eqs 9.183 ff.; seed 002
 // eq. 82 (the "exact" y-form it equals):
@@ -51,7 +46,7 @@ struct GidaspowCollisionalViscosity : KineticPlusCollisional<Law> {
 // Misprints: seed 001 eq. 27 has (3 − e) where (1 + e) belongs (the (3 − e) is Syamlal's);
 // seed 002 eq. 79 puts (1 + e) g0 under the square root and drops the factor 2. Both are
 // tested against this form. → 2 μ_dil/(1 + e) as φ → 0 (finite).
-struct GidaspowViscosity : GidaspowCollisionalViscosity<GidaspowViscosity> {
+struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
   constexpr std::string_view name() const { return "Gidaspow"; }
   constexpr std::string_view reference() const {
     return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
@@ -68,7 +63,7 @@ struct GidaspowViscosity : GidaspowCollisionalViscosity<GidaspowViscosity> {
 // (× φ, the MFiX/OpenFOAM form):
 //   μ_kin = φ ρ_s d √(πΘ) / (6 (3 − e)) · [1 + (2/5)(1 + e)(3e − 1) φ g0],
 // plus Gidaspow's collisional part (OpenFOAM Syamlal). → 0 as φ → 0.
-struct SyamlalViscosity : GidaspowCollisionalViscosity<SyamlalViscosity> {
+struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
   constexpr std::string_view name() const { return "Syamlal"; }
   constexpr std::string_view reference() const {
     return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
@@ -89,7 +84,7 @@ struct SyamlalViscosity : GidaspowCollisionalViscosity<SyamlalViscosity> {
 //                     + (√π/6) φ (λ/2 + (3e−1)/4) / ((3−e) λ/2)
 //                     + (10/96) √π / ((1+e) ((3−e)/2) g0 λ) ],
 // plus Gidaspow's collisional part.
-struct HrenyaSinclairViscosity : GidaspowCollisionalViscosity<HrenyaSinclairViscosity> {
+struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclairViscosity> {
   double length_scale;  // L [m]
 
   constexpr explicit HrenyaSinclairViscosity(double length) : length_scale(length) {}
