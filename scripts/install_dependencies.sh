@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(cmake ninja-build g++ libeigen3-dev libboost-dev libboost-math-dev doctest-dev libbenchmark-dev
-          python3 python3-mpmath gnuplot-nox)
+          python3 python3-mpmath gnuplot-nox pkgconf)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
