@@ -27,9 +27,7 @@ using WithGidaspowCollisionalConductivity = KineticPlusCollisional<Law, 2.0>;
 // (= 2κ_dil/((1 + e) g0)[…]², κ_dil = (75/384) ρ_s d √(πΘ)). → 2κ_dil/(1 + e) as φ → 0.
 struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConductivity> {
   constexpr std::string_view name() const { return "Gidaspow"; }
-  constexpr std::string_view reference() const {
-    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
-  }
+  constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -46,9 +44,7 @@ struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConduc
 // whose last term is the collisional conductivity; kinetic = the rest. → 0 as φ → 0.
 struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConductivity> {
   constexpr std::string_view name() const { return "Syamlal"; }
-  constexpr std::string_view reference() const {
-    return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
-  }
+  constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -70,9 +66,7 @@ struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSi
 
   constexpr explicit HrenyaSinclairConductivity(double length) : length_scale(length) {}
   constexpr std::string_view name() const { return "HrenyaSinclair"; }
-  constexpr std::string_view reference() const {
-    return "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
-  }
+  constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;

@@ -21,10 +21,7 @@ namespace fluidbed::kinetic_theory {
 // (48/√π) η(1 − η) ρ_s φ² g0 Θ^(3/2)/d, and seed 004's binary γ_i for one class.
 struct LunDissipation {
   constexpr std::string_view name() const { return "Lun"; }
-  constexpr std::string_view reference() const {
-    return "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
-           "doi:10.1017/S0022112084000586";
-  }
+  constexpr std::string_view reference() const { return detail::references::lun_1984; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;

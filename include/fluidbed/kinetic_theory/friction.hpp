@@ -66,9 +66,7 @@ struct SchaefferPressure {
   double exponent = 10.0;     // n
 
   constexpr std::string_view name() const { return "Schaeffer"; }
-  constexpr std::string_view reference() const {
-    return "Schaeffer, D.G. (1987) J. Differential Equations 66, 19-50, doi:10.1016/0022-0396(87)90038-6";
-  }
+  constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
@@ -89,9 +87,7 @@ struct SchaefferViscosity {
   double strain_rate_floor = default_strain_rate_floor;  // s [s⁻¹]
 
   constexpr std::string_view name() const { return "Schaeffer"; }
-  constexpr std::string_view reference() const {
-    return "Schaeffer, D.G. (1987) J. Differential Equations 66, 19-50, doi:10.1016/0022-0396(87)90038-6";
-  }
+  constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& frictional_pressure, const StrainRate<S>& rate) const {
     using std::sin;

@@ -66,9 +66,7 @@ struct DragFluctuationSource {
   double temperature_floor = default_temperature_floor;  // Θ_floor [m² s⁻²]
 
   constexpr std::string_view name() const { return "Gidaspow"; }
-  constexpr std::string_view reference() const {
-    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
-  }
+  constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& beta, const S& slip,
                                     const GranularMaterial<T>& m) const {

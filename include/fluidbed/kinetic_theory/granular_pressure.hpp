@@ -31,10 +31,7 @@ FLUIDBED_HOST_DEVICE constexpr S collisional_pressure(const S& phi, const S& the
 // which is what reproduces this form (tested).
 struct LunPressure {
   constexpr std::string_view name() const { return "Lun"; }
-  constexpr std::string_view reference() const {
-    return "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
-           "doi:10.1017/S0022112084000586";
-  }
+  constexpr std::string_view reference() const { return detail::references::lun_1984; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
                                               const GranularMaterial<T>& m) const {
@@ -47,9 +44,7 @@ struct LunPressure {
 // term, → 0 as φ → 0).
 struct SyamlalRogersOBrienPressure {
   constexpr std::string_view name() const { return "SyamlalRogersOBrien"; }
-  constexpr std::string_view reference() const {
-    return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
-  }
+  constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
                                               const GranularMaterial<T>& m) const {

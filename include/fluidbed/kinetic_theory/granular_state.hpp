@@ -88,6 +88,21 @@ void validate_state(std::string_view function, const T& solid_fraction, const T&
 
 namespace detail {
 
+// The references cited by several closures of this folder.
+namespace references {
+inline constexpr std::string_view gidaspow_1994 =
+    "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
+inline constexpr std::string_view lun_1984 =
+    "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
+    "doi:10.1017/S0022112084000586";
+inline constexpr std::string_view syamlal_rogers_obrien_1993 =
+    "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
+inline constexpr std::string_view schaeffer_1987 =
+    "Schaeffer, D.G. (1987) J. Differential Equations 66, 19-50, doi:10.1016/0022-0396(87)90038-6";
+inline constexpr std::string_view hrenya_sinclair_1997 =
+    "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
+}  // namespace references
+
 template <class S>
 struct scalar_of {
   using type = S;

@@ -131,9 +131,7 @@ struct GidaspowRadialDistribution : detail::CubeRootContact<0.6> {
   constexpr explicit GidaspowRadialDistribution(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "Gidaspow"; }
-  constexpr std::string_view reference() const {
-    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
-  }
+  constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
 };
 
 // Ma & Ahmadi (1986), J. Chem. Phys. 84, 3449–3450; seed 002 eq. 77

@@ -48,9 +48,7 @@ using WithGidaspowCollisionalViscosity = KineticPlusCollisional<Law, 0.8>;
 // tested against this form. → 2 μ_dil/(1 + e) as φ → 0 (finite).
 struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
   constexpr std::string_view name() const { return "Gidaspow"; }
-  constexpr std::string_view reference() const {
-    return "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press, ch. 9";
-  }
+  constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     const T one_plus_e = 1.0 + m.restitution;
@@ -65,9 +63,7 @@ struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
 // plus Gidaspow's collisional part (OpenFOAM Syamlal). → 0 as φ → 0.
 struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
   constexpr std::string_view name() const { return "Syamlal"; }
-  constexpr std::string_view reference() const {
-    return "Syamlal, M., Rogers, W. & O'Brien, T.J. (1993) MFIX Documentation: Theory Guide, DOE/METC-94/1004";
-  }
+  constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -89,9 +85,7 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
 
   constexpr explicit HrenyaSinclairViscosity(double length) : length_scale(length) {}
   constexpr std::string_view name() const { return "HrenyaSinclair"; }
-  constexpr std::string_view reference() const {
-    return "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
-  }
+  constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -110,10 +104,7 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
 // Seed 004's binary closure implies λ = (5/3) μ_coll, the same value for one class.
 struct LunBulkViscosity {
   constexpr std::string_view name() const { return "Lun"; }
-  constexpr std::string_view reference() const {
-    return "Lun, C.K.K., Savage, S.B., Jeffrey, D.J. & Chepurniy, N. (1984) J. Fluid Mech. 140, 223-256, "
-           "doi:10.1017/S0022112084000586";
-  }
+  constexpr std::string_view reference() const { return detail::references::lun_1984; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     return (4.0 / 3.0) * detail::collisional_transfer(phi, theta, g0, m);
