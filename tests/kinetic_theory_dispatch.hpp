@@ -2,6 +2,9 @@
 // tests/reference/ use (ktgf_*.csv), evaluated for any scalar (double or Dual).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +13,12 @@
 namespace fluidbed::test {
 
 using kinetic_theory::GranularMaterial;
+
+// |a − b|/|b|, 0 when a == b (also for a = b = 0 or ±∞).
+inline double relative_difference(double a, double b) {
+  if (a == b) return 0;
+  return std::abs(a - b) / std::max(std::abs(b), std::numeric_limits<double>::min());
+}
 
 // The one-class RDF `name` with packing parameter `max_packing` (ignored where fixed).
 template <class S>

@@ -20,12 +20,9 @@ using namespace fluidbed;
 using namespace fluidbed::kinetic_theory;
 using D2 = Dual<double, 2>;
 
-namespace {
+using fluidbed::test::relative_difference;
 
-double relative_difference(double a, double b) {
-  if (a == b) return 0;
-  return std::abs(a - b) / std::max(std::abs(b), std::numeric_limits<double>::min());
-}
+namespace {
 
 // The seed-004 note's state (Part 3): d = 500 µm, ρ_s = 2500, e = 0.9, Θ = 0.01.
 const GranularMaterial<double> note_material{500e-6, 2500.0, 0.9};

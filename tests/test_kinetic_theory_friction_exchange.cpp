@@ -18,9 +18,9 @@
 using namespace fluidbed;
 using namespace fluidbed::kinetic_theory;
 
-namespace {
+using fluidbed::test::relative_difference;
 
-double relative_difference(double a, double b) { return a == b ? 0.0 : std::abs(a - b) / std::abs(b); }
+namespace {
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 

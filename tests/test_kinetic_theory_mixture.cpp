@@ -18,9 +18,9 @@ using namespace fluidbed;
 using namespace fluidbed::kinetic_theory;
 using D4 = Dual<double, 4>;  // ∂/∂φ1, ∂/∂φ2, ∂/∂φ3, ∂/∂|Δv|
 
-namespace {
+using fluidbed::test::relative_difference;
 
-double relative_difference(double a, double b) { return a == b ? 0.0 : std::abs(a - b) / std::abs(b); }
+namespace {
 
 template <class S>
 S mixture_rdf(const std::string& name, std::span<const S> fractions, std::span<const double> diameters, std::size_t i,

@@ -39,12 +39,10 @@ FLUIDBED_HOST_DEVICE constexpr MixtureSums<S> mixture_sums(std::span<const S> fr
   return {total, xi};
 }
 
-// The Mansoori sum F1 + 3 d_ik ξ F2 + 2 (d_ik ξ)² F3 for given gap factors F_j.
+// d_ik ξ, the Mansoori sum's reduced ξ for the pair (i, k).
 template <class S, class T>
-FLUIDBED_HOST_DEVICE constexpr S mansoori_contact(const MansooriFactors<S>& f, const S& xi, const T& d_i,
-                                                  const T& d_k) {
-  const S reduced_xi = (d_i * d_k / (d_i + d_k)) * xi;
-  return f.first + 3.0 * reduced_xi * f.second + 2.0 * reduced_xi * reduced_xi * f.third;
+FLUIDBED_HOST_DEVICE constexpr S reduced_xi(const S& xi, const T& d_i, const T& d_k) {
+  return (d_i * d_k / (d_i + d_k)) * xi;
 }
 
 }  // namespace detail
@@ -84,7 +82,7 @@ struct Mansoori {
     const auto sums = detail::mixture_sums(fractions, diameters);
     const S inverse_gap = 1.0 / (1.0 - sums.total_fraction);
     const detail::MansooriFactors<S> f{inverse_gap, inverse_gap * inverse_gap, inverse_gap * inverse_gap * inverse_gap};
-    return detail::mansoori_contact(f, sums.fraction_over_diameter, diameters[i], diameters[k]);
+    return detail::mansoori_sum(f, detail::reduced_xi(sums.fraction_over_diameter, diameters[i], diameters[k]));
   }
 };
 
@@ -106,7 +104,7 @@ struct ModifiedMansoori {
                                     std::size_t k) const {
     const auto sums = detail::mixture_sums(fractions, diameters);
     const auto f = detail::modified_mansoori_factors(sums.total_fraction, max_packing, packing_margin);
-    return detail::mansoori_contact(f, sums.fraction_over_diameter, diameters[i], diameters[k]);
+    return detail::mansoori_sum(f, detail::reduced_xi(sums.fraction_over_diameter, diameters[i], diameters[k]));
   }
 };
 

@@ -185,6 +185,13 @@ FLUIDBED_HOST_DEVICE MansooriFactors<S> modified_mansoori_factors(const S& total
           inverse_gap_power(total_fraction, max_packing, margin, 3)};
 }
 
+// The Mansoori sum F1 + 3 r F2 + 2 r² F3 for gap factors F_j and r = d_ik ξ (for one class
+// r = φ/2).
+template <class S>
+FLUIDBED_HOST_DEVICE constexpr S mansoori_sum(const MansooriFactors<S>& f, const S& reduced_xi) {
+  return f.first + 3.0 * reduced_xi * f.second + 2.0 * reduced_xi * reduced_xi * f.third;
+}
+
 }  // namespace detail
 
 // Lathouwers & Bellan (2001), Int. J. Multiphase Flow 27, 2155–2187; seed 004 (binary
@@ -206,7 +213,7 @@ struct LathouwersBellan {
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     const auto f = detail::modified_mansoori_factors(phi, max_packing, packing_margin);
-    return f.first + 1.5 * phi * f.second + 0.5 * phi * phi * f.third;
+    return detail::mansoori_sum(f, S(0.5 * phi));
   }
 };
 
