@@ -88,4 +88,9 @@ DragCoefficient<T> evaluate_checked(const AnyDragLaw& law, const DragState<T>& s
   return std::visit([&](const auto& l) { return l.checked(state); }, law);
 }
 
+template <class T>
+DragCoefficientWithDerivatives<T> evaluate_with_derivatives_checked(const AnyDragLaw& law, const DragState<T>& state) {
+  return std::visit([&](const auto& l) { return l.checked_with_derivatives(state); }, law);
+}
+
 }  // namespace fluidbed::drag

@@ -9,6 +9,7 @@
 //   law(state)                    hot path, value             -> DragCoefficient<T>
 //   law.with_derivatives(state)   hot path, ∂β/∂ε and ∂β/∂w   -> DragCoefficientWithDerivatives<T>
 //   law.checked(state)            validates, throws std::domain_error, then law(state)
+//   law.checked_with_derivatives(state)   the same, then law.with_derivatives(state)
 //
 // Convention. β [kg m⁻³ s⁻¹] is per unit suspension volume: the drag on the particles
 // per unit volume is β (u_f − v_p). Its value depends on the buoyancy the host code
@@ -170,6 +171,13 @@ struct DragLaw {
   DragCoefficient<T> checked(const DragState<T>& s) const {
     validate(self().name(), s);
     return (*this)(s);
+  }
+
+  // Checked entry point with ∂β/∂ε and ∂β/∂w (same validation).
+  template <class T>
+  DragCoefficientWithDerivatives<T> checked_with_derivatives(const DragState<T>& s) const {
+    validate(self().name(), s);
+    return with_derivatives(s);
   }
 
   // True if the state lies inside the range the law was fitted or derived for.

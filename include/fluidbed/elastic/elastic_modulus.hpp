@@ -24,6 +24,10 @@
 // Foscolo–Gibilaro's E_f = 3.2 d (1 − ε) Δρ g (eq. 3.75). E_f and E_j are one model in the two
 // buoyancy conventions (E_j = E_f/ε is exactly the factor of eq. 3.19); seed 000 compares them
 // as separate stability criteria (S_f and S_j, stability.hpp).
+//
+// Every function asserts its documented preconditions in debug builds; each has a `_checked`
+// form (the moduli at equilibrium through equilibrium_modulus_checked) that validates them and
+// throws std::domain_error naming the argument and its value.
 #pragma once
 
 #include <cmath>
@@ -35,9 +39,11 @@
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
 #include "../core/vector3.hpp"
+#include "../drag/drag_law.hpp"
 #include "../drag/mazzei_lettieri.hpp"
 #include "../properties.hpp"
 #include "../settling/richardson_zaki.hpp"
+#include "../settling/terminal_velocity.hpp"
 
 namespace fluidbed::elastic {
 
@@ -69,6 +75,7 @@ constexpr std::string_view name(ElasticModel model) {
 //   H   = C n_e (D − 2)/ε           → −4.8/ε as Re* → 0 and ∞           (3.109, 4.38)
 // Every function is finite for Re* in [0, ∞) and ε in (0, 1] except N, which is −∞ at
 // Re* = 0 (only the product Re* N enters C). S may be fluidbed::Dual for derivatives.
+// Preconditions: ε ∈ (0, 1], Re* ≥ 0.
 template <class S>
 struct MazzeiLettieriFunctions {
   S exponent;        // n_e
@@ -79,6 +86,14 @@ struct MazzeiLettieriFunctions {
 };
 
 namespace detail {
+
+// The hot-path preconditions of a state (ε, w) with fluid and diameter: those of a drag law.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE constexpr bool valid_slip_state(const S& voidage, const S& slip, const Fluid<T>& fluid,
+                                                     const T& diameter) {
+  return value_of(voidage) > 0 && value_of(voidage) <= 1 && value_of(slip) >= 0 && fluid.density > T(0) &&
+         fluid.viscosity > T(0) && diameter > T(0);
+}
 
 // The Table 3.1 algebra from x = 0.175 Re*^¾, √Re*, ln ε and ε; N is left to the caller
 // (it needs Re* itself). Shared by mazzei_lettieri_functions and the one-solve hot path
@@ -112,13 +127,15 @@ FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> mazzei_lettieri_functions(const 
 
 // H of the Foscolo–Gibilaro and Jean–Fan moduli: −4.8/ε, the Re* → 0 and ∞ limit of the
 // Mazzei–Lettieri H (eq. 4.38). Their drag is ∝ ε^−4.8 at fixed superficial slip
-// (eqs. 3.90–3.94), whence the 4.8.
+// (eqs. 3.90–3.94), whence the 4.8. Precondition: ε ∈ (0, 1].
 template <class S>
 FLUIDBED_HOST_DEVICE S constant_exponent_sensitivity(const S& voidage) {
+  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1);
   return -4.8 / voidage;
 }
 
-// H of a model at (ε, Re*); Re* is ignored by Foscolo–Gibilaro and Jean–Fan.
+// H of a model at (ε, Re*); Re* is ignored by Foscolo–Gibilaro and Jean–Fan. Preconditions:
+// ε ∈ (0, 1], Re* ≥ 0.
 template <class S>
 FLUIDBED_HOST_DEVICE S voidage_sensitivity(ElasticModel model, const S& voidage, const S& re_star) {
   if (model == ElasticModel::mazzei_lettieri) return mazzei_lettieri_functions(voidage, re_star).voidage_sensitivity;
@@ -129,9 +146,12 @@ FLUIDBED_HOST_DEVICE S voidage_sensitivity(ElasticModel model, const S& voidage,
 
 // E = −(2/3) d (1 − ε)(ρ_p − ρ_f) g H: the modulus with the drag of a homogeneous suspension
 // in equilibrium (classical buoyancy, eq. 3.21), the form eqs. 3.95 and 3.111 take.
+// Preconditions (of every modulus at equilibrium): ε ∈ (0, 1], ρ_f, μ_f, d, g > 0 and
+// ρ_p > ρ_f (see validate_modulus_inputs).
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S modulus_from_sensitivity(const S& voidage, const S& sensitivity, const Fluid<T>& fluid,
                                                 const Particles<T>& particles, const T& gravity) {
+  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && settling::detail::valid_settling_inputs(fluid, particles, gravity));
   const T weight = T(2) / T(3) * particles.diameter * (particles.density - fluid.density) * gravity;
   return -weight * (1.0 - voidage) * sensitivity;
 }
@@ -180,9 +200,11 @@ FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const S& voidage,
 // ---------------------------------------------------------------- off equilibrium
 
 // Re* of a state (eq. 3.53), through the Mazzei–Lettieri drag's solver. S may be Dual in
-// (ε, w): the derivatives follow from the implicit function theorem.
+// (ε, w): the derivatives follow from the implicit function theorem. Preconditions (of every
+// function of a state (ε, w) below): those of a drag law, ε ∈ (0, 1], w ≥ 0, ρ_f, μ_f, d > 0.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S effective_reynolds(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) {
+  FLUIDBED_EXPECTS(detail::valid_slip_state(voidage, slip, fluid, diameter));
   return drag::MazzeiLettieri::effective_reynolds(voidage, particle_reynolds(fluid, diameter, voidage, slip));
 }
 
@@ -206,6 +228,7 @@ template <class T>
 FLUIDBED_HOST_DEVICE DragAndSensitivity<T> mazzei_lettieri_drag_and_sensitivity(const T& voidage, const T& slip,
                                                                                 const Fluid<T>& fluid,
                                                                                 const T& diameter) {
+  FLUIDBED_EXPECTS(detail::valid_slip_state(voidage, slip, fluid, diameter));
   const drag::MazzeiLettieri law;
   const T re = particle_reynolds(fluid, diameter, voidage, slip);
   if (!(re > T(0)) || voidage == T(1))
@@ -234,11 +257,13 @@ FLUIDBED_HOST_DEVICE S mazzei_lettieri_modulus(const S& voidage, const S& slip, 
 // given the drag force density n f_d [N m⁻³] in the convention the host code uses (the
 // elastic force is a component of the drag, so it comes out in the same convention), ∇ε
 // [m⁻¹], H (voidage_sensitivity) and d [m]. Zero when the drag is zero (the force is
-// linear in |n f_d|, so the direction is not needed there).
+// linear in |n f_d|, so the direction is not needed there). Preconditions: d > 0, every
+// component and H finite.
 template <class T>
 FLUIDBED_HOST_DEVICE Vector3<T> elastic_force(const Vector3<T>& drag_force, const Vector3<T>& voidage_gradient,
                                               const T& sensitivity, const T& diameter) {
   using std::sqrt;
+  FLUIDBED_EXPECTS(diameter > T(0));
   const T magnitude = sqrt(dot(drag_force, drag_force));
   if (!(magnitude > T(0))) return {T(0), T(0), T(0)};
   const T factor = -(T(2) / T(3)) * diameter * sensitivity * dot(voidage_gradient, drag_force) / magnitude;
@@ -247,7 +272,8 @@ FLUIDBED_HOST_DEVICE Vector3<T> elastic_force(const Vector3<T>& drag_force, cons
 
 // The 1-D form of eq. 3.74: n f_e = E (∇ε · e) e, e the upward unit vector (opposite to
 // gravity), E an equilibrium modulus. It equals eq. 3.116 only when the drag is vertical; kept
-// to compare with the literature that uses it.
+// to compare with the literature that uses it. Preconditions: `upward` a unit vector, every
+// component and E finite.
 template <class T>
 FLUIDBED_HOST_DEVICE Vector3<T> elastic_force_vertical(const T& modulus, const Vector3<T>& voidage_gradient,
                                                        const Vector3<T>& upward) {
@@ -258,21 +284,31 @@ FLUIDBED_HOST_DEVICE Vector3<T> elastic_force_vertical(const T& modulus, const V
 
 namespace detail {
 
+// The moduli at equilibrium balance the drag against the buoyant weight (1 − ε)(ρ_p − ρ_f) g
+// of a bed fluidized upwards (eqs. 3.21, 3.75, 3.95, 3.111: at equilibrium F̂ = (π d³/6)Δρ g,
+// with u_t > 0 in the bond u_s = u_t ε^n_e). For ρ_p <= ρ_f there is no such bed: the formulas
+// would give E <= 0, a modulus of the wrong sign, not the inverse-fluidization physics (which
+// needs the drag and gravity reversed). So ρ_p > ρ_f is required, as for the terminal velocity
+// the moduli go with (settling::detail::validate_settling, shared). The off-equilibrium
+// Mazzei–Lettieri modulus (eq. 3.110) uses the actual drag and has no such restriction.
 template <class T>
 void validate_modulus_inputs(std::string_view function, const T& voidage, const Fluid<T>& fluid,
                              const Particles<T>& particles, const T& gravity) {
   require_in_half_open(function, "voidage", voidage, T(0), T(1));
-  require_positive(function, "fluid.density", fluid.density);
-  require_positive(function, "fluid.viscosity", fluid.viscosity);
-  require_positive(function, "particles.density", particles.density);
-  require_positive(function, "particles.diameter", particles.diameter);
-  require_positive(function, "gravity", gravity);
+  settling::detail::validate_settling(function, fluid, particles, gravity);
+}
+
+// ε ∈ (0, 1] and Re* ≥ 0, the arguments of Table 3.1.
+template <class T>
+void validate_table_3_1_state(std::string_view function, const T& voidage, const T& re_star) {
+  require_in_half_open(function, "voidage", voidage, T(0), T(1));
+  require_non_negative(function, "re_star", re_star);
 }
 
 }  // namespace detail
 
 // equilibrium_modulus with every argument validated (std::domain_error naming the argument
-// and value).
+// and value); the checked form of the three moduli at equilibrium.
 template <class T>
 T equilibrium_modulus_checked(ElasticModel model, const T& voidage, const Fluid<T>& fluid,
                               const Particles<T>& particles, const T& terminal_reynolds,
@@ -280,6 +316,69 @@ T equilibrium_modulus_checked(ElasticModel model, const T& voidage, const Fluid<
   detail::validate_modulus_inputs("equilibrium_modulus", voidage, fluid, particles, gravity);
   require_non_negative("equilibrium_modulus", "terminal_reynolds", terminal_reynolds);
   return equilibrium_modulus(model, voidage, fluid, particles, terminal_reynolds, gravity);
+}
+
+template <class T>
+MazzeiLettieriFunctions<T> mazzei_lettieri_functions_checked(const T& voidage, const T& re_star) {
+  detail::validate_table_3_1_state("mazzei_lettieri_functions", voidage, re_star);
+  return mazzei_lettieri_functions(voidage, re_star);
+}
+
+template <class T>
+T voidage_sensitivity_checked(ElasticModel model, const T& voidage, const T& re_star) {
+  detail::validate_table_3_1_state("voidage_sensitivity", voidage, re_star);
+  return voidage_sensitivity(model, voidage, re_star);
+}
+
+// The functions of a state (ε, w), validated as a drag law's state (drag::validate).
+template <class T>
+T effective_reynolds_checked(const T& voidage, const T& slip, const Fluid<T>& fluid, const T& diameter) {
+  drag::validate("effective_reynolds", drag::DragState<T>{voidage, slip, fluid, diameter});
+  return effective_reynolds(voidage, slip, fluid, diameter);
+}
+
+template <class T>
+T mazzei_lettieri_sensitivity_checked(const T& voidage, const T& slip, const Fluid<T>& fluid, const T& diameter) {
+  drag::validate("mazzei_lettieri_sensitivity", drag::DragState<T>{voidage, slip, fluid, diameter});
+  return mazzei_lettieri_sensitivity(voidage, slip, fluid, diameter);
+}
+
+template <class T>
+DragAndSensitivity<T> mazzei_lettieri_drag_and_sensitivity_checked(const T& voidage, const T& slip,
+                                                                   const Fluid<T>& fluid, const T& diameter) {
+  drag::validate("mazzei_lettieri_drag_and_sensitivity", drag::DragState<T>{voidage, slip, fluid, diameter});
+  return mazzei_lettieri_drag_and_sensitivity(voidage, slip, fluid, diameter);
+}
+
+template <class T>
+T mazzei_lettieri_modulus_checked(const T& voidage, const T& slip, const Fluid<T>& fluid, const T& diameter) {
+  drag::validate("mazzei_lettieri_modulus", drag::DragState<T>{voidage, slip, fluid, diameter});
+  return mazzei_lettieri_modulus(voidage, slip, fluid, diameter);
+}
+
+template <class T>
+Vector3<T> elastic_force_checked(const Vector3<T>& drag_force, const Vector3<T>& voidage_gradient, const T& sensitivity,
+                                 const T& diameter) {
+  constexpr std::string_view function = "elastic_force";
+  require_finite_elements(function, "drag_force", drag_force);
+  require_finite_elements(function, "voidage_gradient", voidage_gradient);
+  require_finite(function, "sensitivity", sensitivity);
+  require_positive(function, "diameter", diameter);
+  return elastic_force(drag_force, voidage_gradient, sensitivity, diameter);
+}
+
+// `upward` must be a unit vector to within 1e-6 (its length is named in the message).
+template <class T>
+Vector3<T> elastic_force_vertical_checked(const T& modulus, const Vector3<T>& voidage_gradient,
+                                          const Vector3<T>& upward) {
+  using std::abs;
+  using std::sqrt;
+  constexpr std::string_view function = "elastic_force_vertical";
+  require_finite(function, "modulus", modulus);
+  require_finite_elements(function, "voidage_gradient", voidage_gradient);
+  require_finite_elements(function, "upward", upward);
+  require_in_closed(function, "|upward|", sqrt(dot(upward, upward)), T(1) - T(1e-6), T(1) + T(1e-6));
+  return elastic_force_vertical(modulus, voidage_gradient, upward);
 }
 
 }  // namespace fluidbed::elastic

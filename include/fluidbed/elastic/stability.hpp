@@ -26,6 +26,11 @@
 // with u_t Dallavalle's terminal velocity and n_e = n_e(Re_t) (seed eq. 3.24), as seed 000
 // uses them (Table 4.6 is reproduced with exactly these).
 //
+// Preconditions (asserted in debug builds): ε ∈ (0, 1] and a suspension as homogeneous_suspension
+// builds it (ρ_f, μ_f, d, g > 0, ρ_p > ρ_f, u_t, Re_t, n_e > 0); wave numbers and velocities > 0.
+// The `_checked` forms validate them and throw std::domain_error naming the argument and its
+// value; minimum_bubbling_point always validates.
+//
 // S is negative in the packed range, positive in a middle band (bubbling) and negative again
 // as ε → 1, where u_d/u_k ∝ (1 − ε)^−½: there are two roots. The lower one is the minimum
 // bubbling voidage ε_mb; the upper one (re-stabilisation, near ε ≈ 0.99–0.9999) is reported
@@ -39,6 +44,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <boost/math/tools/minima.hpp>
@@ -84,6 +90,26 @@ HomogeneousSuspension<T> homogeneous_suspension_checked(const Fluid<T>& fluid, c
   return homogeneous_suspension(fluid, particles, gravity);
 }
 
+namespace detail {
+
+// A suspension's material data and its derived single-particle data (which a hand-built
+// suspension may get wrong), for the checked forms.
+template <class T>
+void validate_suspension(std::string_view function, const HomogeneousSuspension<T>& s) {
+  settling::detail::validate_settling(function, s.fluid, s.particles, s.gravity);
+  require_positive(function, "suspension.terminal_velocity", s.terminal_velocity);
+  require_positive(function, "suspension.terminal_reynolds", s.terminal_reynolds);
+  require_positive(function, "suspension.exponent", s.exponent);
+}
+
+template <class T>
+void validate_suspension_state(std::string_view function, const HomogeneousSuspension<T>& s, const T& voidage) {
+  validate_suspension(function, s);
+  require_in_half_open(function, "voidage", voidage, T(0), T(1));
+}
+
+}  // namespace detail
+
 // The equilibrium modulus E^e(ε) of a model for this suspension [Pa]. S may be Dual in ε.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
@@ -94,6 +120,7 @@ FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const Homogeneous
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S kinematic_wave_speed(const HomogeneousSuspension<T>& s, const S& voidage) {
   using std::pow;
+  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.exponent > T(0));
   return s.terminal_velocity * s.exponent * (1.0 - voidage) * pow(voidage, s.exponent - T(1));
 }
 
@@ -109,6 +136,7 @@ FLUIDBED_HOST_DEVICE S dynamic_wave_speed(ElasticModel model, const HomogeneousS
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voidage) {
   using std::pow;
+  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.particles.density > T(0));
   const auto f = mazzei_lettieri_functions(voidage, S(s.terminal_reynolds));
   const S superficial = s.terminal_velocity * pow(voidage, s.exponent);
   return (s.particles.density - s.fluid.density) * s.gravity * f.reynolds_factor * (2.0 - f.drag_factor) /
@@ -116,10 +144,17 @@ FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voida
 }
 
 // S = 1 − u_d/u_k: S_f, S_j or S_r (eqs. 3.76, 4.37, 4.36); the state is stable while S < 0.
-// −∞ at ε = 1.
+// −∞ at ε = 1, the limit: both speeds vanish there, u_d/u_k ∝ (1 − ε)^−½.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S stability_function(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+  if (voidage == 1) return S(-std::numeric_limits<T>::infinity());
   return 1.0 - dynamic_wave_speed(model, s, voidage) / kinematic_wave_speed(s, voidage);
+}
+
+template <class T>
+T stability_function_checked(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+  detail::validate_suspension_state("stability_function", s, voidage);
+  return stability_function(model, s, voidage);
 }
 
 // ---------------------------------------------------------------- waves (eqs. 4.34–4.35)
@@ -136,6 +171,24 @@ WaveSpeeds<T> wave_speeds(ElasticModel model, const HomogeneousSuspension<T>& s,
   return {kinematic_wave_speed(s, voidage), dynamic_wave_speed(model, s, voidage), damping(s, voidage)};
 }
 
+// The checked form of u_k, u_d and K.
+template <class T>
+WaveSpeeds<T> wave_speeds_checked(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+  detail::validate_suspension_state("wave_speeds", s, voidage);
+  return wave_speeds(model, s, voidage);
+}
+
+namespace detail {
+
+template <class T>
+void validate_wave_speeds(std::string_view function, const WaveSpeeds<T>& w) {
+  require_non_negative(function, "waves.kinematic", w.kinematic);
+  require_non_negative(function, "waves.dynamic", w.dynamic);
+  require_non_negative(function, "waves.damping", w.damping);
+}
+
+}  // namespace detail
+
 // A voidage wave ε̂ = ε̂_a exp[a t + i k (x − ν t)] (eq. 4.34).
 template <class T>
 struct Wave {
@@ -149,6 +202,7 @@ struct Wave {
 // travel at u_k, short ones at u_d; every k decays iff u_d > u_k.
 template <class T>
 Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber) {
+  FLUIDBED_EXPECTS(wavenumber > T(0) && w.kinematic >= T(0) && w.dynamic >= T(0) && w.damping >= T(0));
   const std::complex<T> discriminant(w.damping * w.damping - T(4) * w.dynamic * w.dynamic * wavenumber * wavenumber,
                                      -T(4) * w.damping * w.kinematic * wavenumber);
   const std::complex<T> sigma = (-w.damping + std::sqrt(discriminant)) / T(2);
@@ -158,6 +212,7 @@ Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber) {
 // Eq. 4.35, a wave of velocity ν: a = K (u_k − ν)/(2ν).
 template <class T>
 T growth_rate_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
+  FLUIDBED_EXPECTS(velocity > T(0));
   return w.damping * (w.kinematic - velocity) / (T(2) * velocity);
 }
 
@@ -165,8 +220,30 @@ T growth_rate_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
 // wave of that velocity exists (ν outside the interval between u_d and u_k).
 template <class T>
 T squared_wavenumber_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
+  FLUIDBED_EXPECTS(velocity > T(0));
   const T v2 = velocity * velocity;
   return w.damping * w.damping / (T(4) * v2) * (w.kinematic * w.kinematic - v2) / (v2 - w.dynamic * w.dynamic);
+}
+
+template <class T>
+Wave<T> wave_of_wavenumber_checked(const WaveSpeeds<T>& w, const T& wavenumber) {
+  detail::validate_wave_speeds("wave_of_wavenumber", w);
+  require_positive("wave_of_wavenumber", "wavenumber", wavenumber);
+  return wave_of_wavenumber(w, wavenumber);
+}
+
+template <class T>
+T growth_rate_of_wave_velocity_checked(const WaveSpeeds<T>& w, const T& velocity) {
+  detail::validate_wave_speeds("growth_rate_of_wave_velocity", w);
+  require_positive("growth_rate_of_wave_velocity", "velocity", velocity);
+  return growth_rate_of_wave_velocity(w, velocity);
+}
+
+template <class T>
+T squared_wavenumber_of_wave_velocity_checked(const WaveSpeeds<T>& w, const T& velocity) {
+  detail::validate_wave_speeds("squared_wavenumber_of_wave_velocity", w);
+  require_positive("squared_wavenumber_of_wave_velocity", "velocity", velocity);
+  return squared_wavenumber_of_wave_velocity(w, velocity);
 }
 
 // ---------------------------------------------------------------- minimum bubbling point
@@ -219,11 +296,12 @@ T log_gap_of_voidage(const T& voidage) {
 // on 2000 points uniform in −ln(1 − ε); its maximum is refined by Brent's method and every
 // root bracketed by the samples (or by the maximum, so that a positive band narrower than the
 // sampling is still found) is refined by TOMS 748 to full precision. Throws std::domain_error
-// unless 0 < lower < upper <= 1.
+// unless 0 < lower < upper <= 1 and the suspension is valid (detail::validate_suspension).
 template <class T>
 StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const HomogeneousSuspension<T>& s,
                                               const VoidageInterval<T>& interval = {}) {
   using std::pow;
+  detail::validate_suspension("minimum_bubbling_point", s);
   require_in_open("minimum_bubbling_point", "interval.lower", interval.lower, T(0), T(1));
   require_in_half_open("minimum_bubbling_point", "interval.upper", interval.upper, interval.lower, T(1));
   const T stability_limit = std::min(interval.upper, T(1) - T(1e-15));

@@ -13,11 +13,15 @@
 // No seed prints this (seed-004 note §2.12 derives the simple-shear case Θ = Aγ̇²/B);
 // OpenFOAM's "equilibrium" option and MFiX's GT_ALGEBRAIC solve the same quadratic with
 // their own constants (anchors note §2.16, where MFiX's differs by a factor in K3).
-// Preconditions: as for the laws; B > 0 (e < 1) or b > 0 — with no dissipation and
-// compression (b < 0, e = 1) there is no finite root and the result is +∞.
+// Preconditions (asserted in debug builds): as for the laws (φ ∈ [0, 1), g0 > 0, material
+// valid), D':D' ≥ 0, β ≥ 0; and B > 0 (e < 1, φ > 0) or b > 0 — with no dissipation and
+// b ≤ 0 (compression at e = 1, or φ = 0 without gas) there is no finite root and the result is
+// +∞ under shear. algebraic_granular_temperature_checked validates the arguments and the
+// laws' parameters and throws std::domain_error, also for that +∞.
 #pragma once
 
 #include <cmath>
+#include <string_view>
 
 #include "granular_state.hpp"
 
@@ -34,6 +38,7 @@ FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const Pressure& pressure, 
                                                       const GranularMaterial<T>& m, const StrainRate<S>& rate,
                                                       const S& beta) {
   using std::sqrt;
+  FLUIDBED_EXPECTS(value_of(rate.deviatoric_contraction) >= 0 && value_of(beta) >= 0);
   const S unit(1.0);
   const S b = pressure(phi, unit, g0, m) * rate.divergence + 3.0 * beta;
   const S c = 2.0 * shear_viscosity(phi, unit, g0, m) * rate.deviatoric_contraction +
@@ -45,6 +50,33 @@ FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const Pressure& pressure, 
   else
     x = (sqrt(b * b + 4.0 * B * c) - b) / (2.0 * B);
   return x * x;
+}
+
+// The checked entry point: validates φ, g0 > 0, the material, the strain-rate invariants,
+// β ≥ 0 and the four laws' parameters, and that a finite Θ exists, throwing std::domain_error
+// naming the argument and its value.
+template <class T, class Pressure, class ShearViscosity, class BulkViscosity, class Dissipation>
+T algebraic_granular_temperature_checked(const Pressure& pressure, const ShearViscosity& shear_viscosity,
+                                         const BulkViscosity& bulk_viscosity, const Dissipation& dissipation,
+                                         const T& phi, const T& g0, const GranularMaterial<T>& m,
+                                         const StrainRate<T>& rate, const T& beta) {
+  constexpr std::string_view function = "kinetic_theory::algebraic_granular_temperature";
+  validate_solid_fraction(function, phi);
+  require_positive(function, "g0", g0);
+  validate(function, m);
+  validate(function, rate);
+  require_non_negative(function, "beta", beta);
+  validate_parameters(function, pressure);
+  validate_parameters(function, shear_viscosity);
+  validate_parameters(function, bulk_viscosity);
+  validate_parameters(function, dissipation);
+  const T theta =
+      algebraic_granular_temperature(pressure, shear_viscosity, bulk_viscosity, dissipation, phi, g0, m, rate, beta);
+  if (!fluidbed::detail::is_finite_number(theta))
+    fluidbed::detail::throw_domain_error(function, "beta", beta,
+                                         "no finite granular temperature: without collisional dissipation (e = 1 or "
+                                         "phi = 0) the production needs the sink 3 beta + (p_s/Theta) div u > 0");
+  return theta;
 }
 
 // Θ with its sensitivities.

@@ -3,8 +3,9 @@
 //
 // Shape: law(φ, Θ, g0, material) → κ ≥ 0 = law.kinetic(...) + law.collisional(...),
 // templated on the scalar. Every form is ∝ √Θ (∂κ/∂Θ = κ/(2Θ), +∞ at Θ = 0).
-// Preconditions: φ ∈ [0, 1), Θ ≥ 0, material as in granular_state.hpp;
-// HrenyaSinclairConductivity also length_scale > 0.
+// Preconditions (asserted in debug builds): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in
+// granular_state.hpp; HrenyaSinclairConductivity also length_scale > 0.
+// evaluate_checked(law, φ, Θ, g0, material) validates them and throws std::domain_error.
 #pragma once
 
 #include <cmath>
@@ -67,9 +68,11 @@ struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSi
   constexpr explicit HrenyaSinclairConductivity(double length) : length_scale(length) {}
   constexpr std::string_view name() const { return "HrenyaSinclair"; }
   constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
+  void validate(std::string_view function) const { require_positive(function, "length_scale", length_scale); }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
+    FLUIDBED_EXPECTS(length_scale > 0);
     const T e = m.restitution, d_factor = 49.0 / 16.0 - 33.0 / 16.0 * e;
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
     const S bracket =

@@ -65,12 +65,13 @@ struct ConstitutiveSet {
             split(r.bulk_viscosity),      split(r.conductivity), split(r.dissipation)};
   }
 
-  // Validates the state and the material (std::domain_error naming the argument), then
-  // evaluates.
+  // Validates the state, the material and the laws' parameters (std::domain_error naming the
+  // argument and its value), then evaluates.
   template <class T>
   ConstitutiveValues<T> checked(const T& phi, const T& theta, const GranularMaterial<T>& m) const {
-    validate_state("kinetic_theory::ConstitutiveSet", phi, theta);
-    validate("kinetic_theory::ConstitutiveSet", m);
+    validate_state(checked_function, phi, theta);
+    validate(checked_function, m);
+    validate_laws();
     return (*this)(phi, theta, m);
   }
 
@@ -82,6 +83,16 @@ struct ConstitutiveSet {
                                                           radial_distribution(phi), m, rate, beta);
   }
 
+  // The same, validated (algebraic_granular_temperature_checked).
+  template <class T>
+  T algebraic_granular_temperature_checked(const T& phi, const GranularMaterial<T>& m, const StrainRate<T>& rate,
+                                           const T& beta) const {
+    validate_solid_fraction(checked_function, phi);  // before g0(φ) is evaluated
+    validate_laws();
+    return kinetic_theory::algebraic_granular_temperature_checked(
+        pressure, shear_viscosity, bulk_viscosity, dissipation, phi, radial_distribution(phi), m, rate, beta);
+  }
+
   template <class T>
   FLUIDBED_HOST_DEVICE AlgebraicTemperatureSensitivities<T> algebraic_granular_temperature_with_sensitivities(
       const T& phi, const GranularMaterial<T>& m, const StrainRate<T>& rate, const T& beta) const {
@@ -91,6 +102,18 @@ struct ConstitutiveSet {
         StrainRate<D>{D::variable(rate.divergence, 2), D::variable(rate.deviatoric_contraction, 3)},
         D::variable(beta, 1));
     return {theta.value, theta.derivative[0], theta.derivative[1], theta.derivative[2], theta.derivative[3]};
+  }
+
+ private:
+  static constexpr std::string_view checked_function = "kinetic_theory::ConstitutiveSet";
+
+  void validate_laws() const {
+    validate_parameters(checked_function, radial_distribution);
+    validate_parameters(checked_function, pressure);
+    validate_parameters(checked_function, shear_viscosity);
+    validate_parameters(checked_function, conductivity);
+    validate_parameters(checked_function, bulk_viscosity);
+    validate_parameters(checked_function, dissipation);
   }
 };
 

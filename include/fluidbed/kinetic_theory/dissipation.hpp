@@ -2,7 +2,9 @@
 // enters the granular energy balance as −γ (granular_state.hpp).
 //
 // Shape: law(φ, Θ, g0, material) → γ ≥ 0, templated on the scalar; ∝ Θ^(3/2), so
-// ∂γ/∂Θ = (3/2) γ/Θ, 0 at Θ = 0. Preconditions as in granular_state.hpp.
+// ∂γ/∂Θ = (3/2) γ/Θ, 0 at Θ = 0. Preconditions (asserted in debug builds): φ ∈ [0, 1),
+// Θ ≥ 0, g0 > 0, material as in granular_state.hpp; evaluate_checked(law, φ, Θ, g0,
+// material) validates them and throws std::domain_error.
 #pragma once
 
 #include <cmath>
@@ -25,6 +27,7 @@ struct LunDissipation {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     const T e = m.restitution;
     return (12.0 * (1.0 - e * e) * m.density / (m.diameter * detail::sqrt_pi)) * (g0 * phi * phi) *
            (theta * sqrt(theta));

@@ -6,12 +6,15 @@
 //
 // Frictional pressures are 0 below the onset fraction φ_min and grow steeply towards
 // packing. Frictional viscosities divide by a strain rate: each law documents its floor.
-// The friction angle is in radians. Preconditions: φ ∈ [0, 1), Θ ≥ 0, d > 0,
-// D':D' ≥ 0, φ_min < φ_max, friction angle in (0, π/2).
+// The friction angle is in radians. Preconditions (asserted in debug builds): φ ∈ [0, 1),
+// Θ ≥ 0, d > 0, p_f ≥ 0, D':D' ≥ 0, 0 <= φ_min < φ_max <= 1, 0 < packing_margin < φ_max,
+// friction angle in (0, π/2), strain-rate floor > 0, coefficients and exponents ≥ 0.
+// evaluate_checked(law, args…) validates them and throws std::domain_error.
 #pragma once
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <string_view>
 
 #include "granular_state.hpp"
@@ -20,6 +23,21 @@ namespace fluidbed::kinetic_theory {
 
 // The default strain-rate floor s [s⁻¹] of the frictional viscosities.
 inline constexpr double default_strain_rate_floor = 1e-6;
+
+namespace detail {
+
+// The parameters the frictional viscosities share: φ_f ∈ (0, π/2) and s > 0 (with s = 0 the
+// viscosity is infinite, or 0/0, at rest).
+FLUIDBED_HOST_DEVICE constexpr bool valid_yield_parameters(double friction_angle, double strain_rate_floor) {
+  return friction_angle > 0 && friction_angle < std::numbers::pi / 2 && strain_rate_floor > 0;
+}
+
+inline void validate_yield_parameters(std::string_view function, double friction_angle, double strain_rate_floor) {
+  require_in_open(function, "friction_angle", friction_angle, 0.0, std::numbers::pi / 2);
+  require_positive(function, "strain_rate_floor", strain_rate_floor);
+}
+
+}  // namespace detail
 
 // Johnson & Jackson (1987), J. Fluid Mech. 176, 67–93, in the form of Johnson, Nott &
 // Jackson (1990), J. Fluid Mech. 210, 501–535 (seed 001 eq. 36; seed 004, which splits it
@@ -46,9 +64,18 @@ struct JohnsonJacksonPressure {
     return "Johnson, P.C. & Jackson, R. (1987) J. Fluid Mech. 176, 67-93; Johnson, P.C., Nott, P. & Jackson, R. "
            "(1990) J. Fluid Mech. 210, 501-535";
   }
+  void validate(std::string_view function) const {
+    detail::validate_packing(function, max_packing, packing_margin);
+    require_in_closed_open(function, "min_fraction", min_fraction, 0.0, max_packing);
+    require_non_negative(function, "coefficient", coefficient);
+    require_non_negative(function, "numerator_exponent", numerator_exponent);
+    require_non_negative(function, "denominator_exponent", denominator_exponent);
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin) &&
+                     min_fraction >= 0 && min_fraction < max_packing);
     if (!(phi > min_fraction)) return S(0);
     const S gap_factor = detail::continued_linearly_above(
         phi, max_packing - packing_margin, [&](const auto& x) { return pow(max_packing - x, -denominator_exponent); });
@@ -67,9 +94,15 @@ struct SchaefferPressure {
 
   constexpr std::string_view name() const { return "Schaeffer"; }
   constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
+  void validate(std::string_view function) const {
+    require_in_closed_open(function, "min_fraction", min_fraction, 0.0, 1.0);
+    require_non_negative(function, "coefficient", coefficient);
+    require_non_negative(function, "exponent", exponent);
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && min_fraction >= 0 && min_fraction < 1);
     if (!(phi > min_fraction)) return S(0);
     return coefficient * pow(phi - min_fraction, exponent);
   }
@@ -88,10 +121,15 @@ struct SchaefferViscosity {
 
   constexpr std::string_view name() const { return "Schaeffer"; }
   constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
+  void validate(std::string_view function) const {
+    detail::validate_yield_parameters(function, friction_angle, strain_rate_floor);
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& frictional_pressure, const StrainRate<S>& rate) const {
     using std::sin;
     using std::sqrt;
+    FLUIDBED_EXPECTS(value_of(frictional_pressure) >= 0 && value_of(rate.deviatoric_contraction) >= 0 &&
+                     detail::valid_yield_parameters(friction_angle, strain_rate_floor));
     const S invariant = 0.5 * rate.deviatoric_contraction + strain_rate_floor * strain_rate_floor;
     return (0.5 * sin(friction_angle)) * frictional_pressure / sqrt(invariant);
   }
@@ -121,12 +159,18 @@ struct SrivastavaSundaresan {
   constexpr std::string_view reference() const {
     return "Srivastava, A. & Sundaresan, S. (2003) Powder Technol. 129, 72-85, doi:10.1016/S0032-5910(02)00132-8";
   }
+  void validate(std::string_view function) const {
+    critical_state_pressure.validate(function);
+    detail::validate_yield_parameters(function, friction_angle, strain_rate_floor);
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE FrictionalStress<S> operator()(const S& phi, const S& theta, const T& diameter,
                                                       const StrainRate<S>& rate) const {
     using std::pow;
     using std::sin;
     using std::sqrt;
+    FLUIDBED_EXPECTS(value_of(theta) >= 0 && diameter > T(0) && value_of(rate.deviatoric_contraction) >= 0 &&
+                     detail::valid_yield_parameters(friction_angle, strain_rate_floor));
     const S critical = critical_state_pressure(phi);
     const T sin_angle = sin(friction_angle);
     const S zeta =
@@ -141,5 +185,28 @@ struct SrivastavaSundaresan {
     return {pressure, viscosity};
   }
 };
+
+// Checked entry points of the frictional viscosities (the pressures: evaluate_checked(law, φ),
+// granular_state.hpp): validate the arguments and the law's parameters, throwing
+// std::domain_error naming the argument and its value, then evaluate.
+template <class T>
+T evaluate_checked(const SchaefferViscosity& law, const T& frictional_pressure, const StrainRate<T>& rate) {
+  const std::string function = detail::checked_function_name(law);
+  require_non_negative(function, "frictional_pressure", frictional_pressure);
+  validate(function, rate);
+  law.validate(function);
+  return law(frictional_pressure, rate);
+}
+
+template <class T>
+FrictionalStress<T> evaluate_checked(const SrivastavaSundaresan& law, const T& phi, const T& theta, const T& diameter,
+                                     const StrainRate<T>& rate) {
+  const std::string function = detail::checked_function_name(law);
+  validate_state(function, phi, theta);
+  require_positive(function, "diameter", diameter);
+  validate(function, rate);
+  law.validate(function);
+  return law(phi, theta, diameter, rate);
+}
 
 }  // namespace fluidbed::kinetic_theory

@@ -2,8 +2,10 @@
 //
 // Shape: law(φ, Θ, g0, material) → p_s ≥ 0, templated on the scalar (Dual φ, Θ and a
 // g0 computed from the Dual φ give ∂p_s/∂φ — the "pPrime" implicit solvers need — and
-// ∂p_s/∂Θ = p_s/Θ). Every form is linear in Θ. Preconditions: φ ∈ [0, 1), Θ ≥ 0,
-// material as in granular_state.hpp. Frictional pressure: friction.hpp.
+// ∂p_s/∂Θ = p_s/Θ). Every form is linear in Θ. Preconditions (asserted in debug builds):
+// φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in granular_state.hpp; AhmadiMaPressure also
+// friction_coefficient ≥ 0. evaluate_checked(law, φ, Θ, g0, material) validates them and
+// throws std::domain_error. Frictional pressure: friction.hpp.
 #pragma once
 
 #include <string_view>
@@ -35,6 +37,7 @@ struct LunPressure {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
                                               const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     return m.density * (phi * theta) + detail::collisional_pressure(phi, theta, g0, m);
   }
 };
@@ -48,6 +51,7 @@ struct SyamlalRogersOBrienPressure {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
                                               const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     return detail::collisional_pressure(phi, theta, g0, m);
   }
 };
@@ -66,9 +70,13 @@ struct AhmadiMaPressure {
   constexpr std::string_view reference() const {
     return "Ahmadi, G. & Ma, D. (1990) Int. J. Multiphase Flow 16, 323-351";
   }
+  void validate(std::string_view function) const {
+    require_non_negative(function, "friction_coefficient", friction_coefficient);
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
                                               const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m) && friction_coefficient >= 0);
     const T e = m.restitution;
     const T inelastic = 1.0 + 0.5 * (1.0 + e) * (1.0 - e + 2.0 * friction_coefficient);
     return m.density * (phi * theta) * (inelastic + 4.0 * phi * g0);

@@ -16,10 +16,18 @@
 //   the value and exact partial derivatives (core/dual.hpp). The radial distribution
 //   function g0 is an argument, so that a derivative in φ carries dg0/dφ through the
 //   chain rule whichever g0 the host picked (radial_distribution.hpp).
+// * Hot path and checked entry point. law(args…) asserts its documented preconditions in
+//   debug builds only; evaluate_checked(law, args…), with the same arguments, validates
+//   them and the law's own parameters and throws std::domain_error naming the argument and
+//   its value. The generic forms below serve every law of the shapes g0(φ) (and the
+//   frictional pressures p_f(φ)) and law(φ, Θ, g0, material); the other shapes have their
+//   own overloads next to the law. ConstitutiveSet::checked validates a whole set.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <concepts>
+#include <string>
 #include <string_view>
 
 #include "../core/config.hpp"
@@ -74,16 +82,35 @@ template <class T>
 void validate(std::string_view function, const GranularMaterial<T>& m) {
   require_positive(function, "material.diameter", m.diameter);
   require_positive(function, "material.density", m.density);
-  if (!detail::is_finite_number(m.restitution) || !(m.restitution >= T(0)) || !(m.restitution <= T(1)))
-    detail::throw_domain_error(function, "material.restitution", m.restitution, "must lie in [0, 1]");
+  require_in_closed(function, "material.restitution", m.restitution, T(0), T(1));
+}
+
+// Validates φ ∈ [0, 1) for the checked entry points.
+template <class T>
+void validate_solid_fraction(std::string_view function, const T& solid_fraction) {
+  require_in_closed_open(function, "solid_fraction", solid_fraction, T(0), T(1));
 }
 
 // Validates φ ∈ [0, 1) and Θ ≥ 0 for the checked entry points.
 template <class T>
 void validate_state(std::string_view function, const T& solid_fraction, const T& granular_temperature) {
-  if (!detail::is_finite_number(solid_fraction) || !(solid_fraction >= T(0)) || !(solid_fraction < T(1)))
-    detail::throw_domain_error(function, "solid_fraction", solid_fraction, "must lie in [0, 1)");
+  validate_solid_fraction(function, solid_fraction);
   require_non_negative(function, "granular_temperature", granular_temperature);
+}
+
+// Validates the strain-rate invariants (∇·u finite, D':D' ≥ 0) for the checked entry points.
+template <class T>
+void validate(std::string_view function, const StrainRate<T>& rate) {
+  require_finite(function, "rate.divergence", rate.divergence);
+  require_non_negative(function, "rate.deviatoric_contraction", rate.deviatoric_contraction);
+}
+
+// Validates a law's own parameters (a maximum packing, a length scale, …) for the checked
+// entry points. Laws with parameters provide a member validate(function); the others have
+// nothing to validate.
+template <class Law>
+void validate_parameters(std::string_view function, const Law& law) {
+  if constexpr (requires { law.validate(function); }) law.validate(function);
 }
 
 namespace detail {
@@ -136,6 +163,42 @@ FLUIDBED_HOST_DEVICE constexpr S non_negative_part(const S& x) {
   return x > 0 ? x : S(0);
 }
 
+// The hot-path preconditions shared by the laws, as predicates for FLUIDBED_EXPECTS (no
+// exceptions, usable in device code; NaN fails every comparison). S may be a Dual.
+template <class S>
+FLUIDBED_HOST_DEVICE constexpr bool valid_solid_fraction(const S& phi) {
+  return value_of(phi) >= 0 && value_of(phi) < 1;
+}
+
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr bool valid_material(const GranularMaterial<T>& m) {
+  return m.diameter > T(0) && m.density > T(0) && m.restitution >= T(0) && m.restitution <= T(1);
+}
+
+// The preconditions of law(φ, Θ, g0, material): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material valid.
+template <class S, class T>
+FLUIDBED_HOST_DEVICE constexpr bool valid_closure_arguments(const S& phi, const S& theta, const S& g0,
+                                                            const GranularMaterial<T>& m) {
+  return valid_solid_fraction(phi) && value_of(theta) >= 0 && value_of(g0) > 0 && valid_material(m);
+}
+
+// A packing limit φ_max ∈ (0, 1] and the margin 0 < margin < φ_max below it where a
+// singular factor is continued linearly (a zero margin would take the slope at the pole).
+FLUIDBED_HOST_DEVICE constexpr bool valid_packing(double max_packing, double packing_margin) {
+  return max_packing > 0 && max_packing <= 1 && packing_margin > 0 && packing_margin < max_packing;
+}
+
+inline void validate_packing(std::string_view function, double max_packing, double packing_margin) {
+  require_in_half_open(function, "max_packing", max_packing, 0.0, 1.0);
+  require_in_open(function, "packing_margin", packing_margin, 0.0, max_packing);
+}
+
+// The function a checked entry point names in its messages: "kinetic_theory::<law name>".
+template <class Law>
+std::string checked_function_name(const Law& law) {
+  return "kinetic_theory::" + std::string(law.name());
+}
+
 // φ² ρ_s d g0 (1 + e) √(Θ/π): the collisional transfer common to the Gidaspow/Lun shear
 // viscosity (× 4/5), Lun's bulk viscosity (× 4/3) and the collisional conductivity (× 2).
 template <class S, class T>
@@ -153,6 +216,7 @@ template <class Law, double collisional_factor>
 struct KineticPlusCollisional {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     return collisional_factor * detail::collisional_transfer(phi, theta, g0, m);
   }
   template <class S, class T>
@@ -170,6 +234,40 @@ FLUIDBED_HOST_DEVICE ValueAndDerivatives<T> with_derivatives(const F& f, const T
   using D = Dual<T, 2>;
   const D r = f(D::variable(solid_fraction, 0), D::variable(granular_temperature, 1));
   return {r.value, r.derivative[0], r.derivative[1]};
+}
+
+// The calling shapes served by the generic checked entry points below.
+template <class Law, class T>
+concept FractionLaw = requires(const Law& law, const T& phi) {
+  { law(phi) } -> std::convertible_to<T>;
+};
+template <class Law, class T>
+concept ClosureLaw = requires(const Law& law, const T& x, const GranularMaterial<T>& m) {
+  { law(x, x, x, m) } -> std::convertible_to<T>;
+};
+
+// Checked entry point of the laws g(φ): the radial distribution functions and the
+// frictional pressures. Throws std::domain_error unless φ ∈ [0, 1) and the law's parameters
+// are valid.
+template <class T, FractionLaw<T> Law>
+T evaluate_checked(const Law& law, const T& phi) {
+  const std::string function = detail::checked_function_name(law);
+  validate_solid_fraction(function, phi);
+  validate_parameters(function, law);
+  return law(phi);
+}
+
+// Checked entry point of the closures law(φ, Θ, g0, material): granular pressures, shear and
+// bulk viscosities, conductivities, dissipation. Throws std::domain_error unless φ ∈ [0, 1),
+// Θ ≥ 0, g0 > 0, the material and the law's parameters are valid.
+template <class T, ClosureLaw<T> Law>
+T evaluate_checked(const Law& law, const T& phi, const T& theta, const T& g0, const GranularMaterial<T>& m) {
+  const std::string function = detail::checked_function_name(law);
+  validate_state(function, phi, theta);
+  require_positive(function, "g0", g0);
+  validate(function, m);
+  validate_parameters(function, law);
+  return law(phi, theta, g0, m);
 }
 
 }  // namespace fluidbed::kinetic_theory

@@ -4,16 +4,21 @@
 //   φ_t = Σ φ_m,   ξ = Σ φ_m/d_m [m⁻¹],   d_ik = d_i d_k/(d_i + d_k),
 // each form gives the contact value between a particle of class i and one of class k.
 // The fractions are a span of the scalar S (a Dual per class gives ∂g_ik/∂φ_m for every
-// m), the diameters a span of T. Preconditions: equal non-zero lengths, i and k valid
-// indices, φ_m ≥ 0, d_m > 0, φ_t < 1 (Lebowitz, Mansoori).
+// m), the diameters a span of T. Preconditions (asserted in debug builds): equal non-zero
+// lengths, i and k valid indices, φ_m ≥ 0, d_m > 0, φ_t < 1, and for ModifiedMansoori
+// φ_max ∈ (0, 1] and 0 < packing_margin < φ_max. evaluate_checked(law, fractions,
+// diameters, i, k) validates them and throws std::domain_error naming the argument and its
+// value (e.g. 'fractions[2]').
 //
 // One-class limits (tested): Lebowitz → PercusYevick, Mansoori → CarnahanStarling,
 // ModifiedMansoori → LathouwersBellan; splitting a class into identical halves changes
 // nothing.
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "radial_distribution.hpp"
@@ -28,14 +33,19 @@ struct MixtureSums {
   S fraction_over_diameter;  // ξ = Σ φ_m/d_m
 };
 
+// φ_t and ξ of the classes, asserting the preconditions of g_ik (i, k the pair's classes).
 template <class S, class T>
-FLUIDBED_HOST_DEVICE constexpr MixtureSums<S> mixture_sums(std::span<const S> fractions, std::span<const T> diameters) {
-  FLUIDBED_EXPECTS(!fractions.empty() && fractions.size() == diameters.size());
+FLUIDBED_HOST_DEVICE constexpr MixtureSums<S> mixture_sums(std::span<const S> fractions, std::span<const T> diameters,
+                                                           std::size_t i, std::size_t k) {
+  FLUIDBED_EXPECTS(!fractions.empty() && fractions.size() == diameters.size() && i < fractions.size() &&
+                   k < fractions.size());
   S total(0), xi(0);
   for (std::size_t m = 0; m < fractions.size(); ++m) {
+    FLUIDBED_EXPECTS(value_of(fractions[m]) >= 0 && diameters[m] > T(0));
     total = total + fractions[m];
     xi = xi + fractions[m] / diameters[m];
   }
+  FLUIDBED_EXPECTS(value_of(total) < 1);
   return {total, xi};
 }
 
@@ -60,7 +70,7 @@ struct Lebowitz {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                               std::size_t k) const {
-    const auto sums = detail::mixture_sums(fractions, diameters);
+    const auto sums = detail::mixture_sums(fractions, diameters, i, k);
     const S inverse_gap = 1.0 / (1.0 - sums.total_fraction);
     const T d_i = diameters[i], d_k = diameters[k];
     return inverse_gap + 3.0 * (d_i * d_k / (d_i + d_k)) * sums.fraction_over_diameter * inverse_gap * inverse_gap;
@@ -79,7 +89,7 @@ struct Mansoori {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                               std::size_t k) const {
-    const auto sums = detail::mixture_sums(fractions, diameters);
+    const auto sums = detail::mixture_sums(fractions, diameters, i, k);
     const S inverse_gap = 1.0 / (1.0 - sums.total_fraction);
     const detail::MansooriFactors<S> f{inverse_gap, inverse_gap * inverse_gap, inverse_gap * inverse_gap * inverse_gap};
     return detail::mansoori_sum(f, detail::reduced_xi(sums.fraction_over_diameter, diameters[i], diameters[k]));
@@ -99,13 +109,46 @@ struct ModifiedMansoori {
     return "Lathouwers, D. & Bellan, J. (2001) Int. J. Multiphase Flow 27, 2155-2187; Mansoori et al. (1971) J. Chem. "
            "Phys. 54, 1523-1525";
   }
+  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                     std::size_t k) const {
-    const auto sums = detail::mixture_sums(fractions, diameters);
+    const auto sums = detail::mixture_sums(fractions, diameters, i, k);
+    FLUIDBED_EXPECTS(detail::valid_packing(max_packing, packing_margin));
     const auto f = detail::modified_mansoori_factors(sums.total_fraction, max_packing, packing_margin);
     return detail::mansoori_sum(f, detail::reduced_xi(sums.fraction_over_diameter, diameters[i], diameters[k]));
   }
 };
+
+// The calling shape of the mixture forms.
+template <class Law, class T>
+concept MixtureLaw = requires(const Law& law, std::span<const T> values, std::size_t i) {
+  { law(values, values, i, i) } -> std::convertible_to<T>;
+};
+
+// Checked entry point of the mixture forms: validates the spans (equal lengths >= 1, every
+// φ_m ≥ 0, d_m > 0, φ_t < 1), the pair (i, k) and the law's parameters, throwing
+// std::domain_error naming the argument and its value, then evaluates g_ik.
+template <class T, MixtureLaw<T> Law>
+T evaluate_checked(const Law& law, std::span<const T> fractions, std::span<const T> diameters, std::size_t i,
+                   std::size_t k) {
+  const std::string function = detail::checked_function_name(law);
+  if (fractions.empty()) fluidbed::detail::throw_domain_error(function, "fractions.size()", 0, "must be >= 1");
+  if (diameters.size() != fractions.size())
+    fluidbed::detail::throw_domain_error(function, "diameters.size()", diameters.size(),
+                                         "must equal fractions.size() = " + std::to_string(fractions.size()));
+  const std::string classes = "must be < fractions.size() = " + std::to_string(fractions.size());
+  if (i >= fractions.size()) fluidbed::detail::throw_domain_error(function, "i", i, classes);
+  if (k >= fractions.size()) fluidbed::detail::throw_domain_error(function, "k", k, classes);
+  T total(0);
+  for (std::size_t m = 0; m < fractions.size(); ++m) {
+    require_non_negative(function, indexed_argument("fractions", m), fractions[m]);
+    require_positive(function, indexed_argument("diameters", m), diameters[m]);
+    total += fractions[m];
+  }
+  require_in_closed_open(function, "sum of fractions", total, T(0), T(1));
+  validate_parameters(function, law);
+  return law(fractions, diameters, i, k);
+}
 
 }  // namespace fluidbed::kinetic_theory

@@ -7,8 +7,10 @@
 // object: call it with φ (a Dual φ gives dg0/dφ) and pass its value to the closures.
 //
 // Shape: g0(φ) templated on the scalar; name(); reference(). φ ∈ [0, 1) is the
-// precondition of every form. Every form → 1 as φ → 0 except GidaspowRadialDistribution
-// (→ 3/5, as published). The cube-root forms approach 1 like 1 + (φ/φ_max)^(1/3): their
+// precondition of every form (asserted in debug builds), and for the forms with a packing
+// limit φ_max ∈ (0, 1] and 0 < packing_margin < φ_max; evaluate_checked(rdf, φ)
+// (granular_state.hpp) validates both and throws std::domain_error. Every form → 1 as φ → 0 except
+// GidaspowRadialDistribution (→ 3/5, as published). The cube-root forms approach 1 like 1 + (φ/φ_max)^(1/3): their
 // slope is +∞ at φ = 0.
 //
 // Behaviour at and beyond maximum packing. The forms with a packing limit φ_max diverge
@@ -42,6 +44,7 @@ struct CarnahanStarling {
   }
   template <class S>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
     const S gap = 1.0 - phi;
     return (1.0 - 0.5 * phi) / (gap * gap * gap);
   }
@@ -57,6 +60,7 @@ struct PercusYevick {
   }
   template <class S>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
     const S gap = 1.0 - phi;
     return (1.0 + 0.5 * phi) / (gap * gap);
   }
@@ -70,9 +74,11 @@ struct LunSavage {
 
   constexpr std::string_view name() const { return "LunSavage"; }
   constexpr std::string_view reference() const { return "Lun, C.K.K. & Savage, S.B. (1986) Acta Mech. 63, 15-44"; }
+  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     const double exponent = -2.5 * max_packing, m = max_packing;
     return detail::continued_linearly_above(phi, m - packing_margin,
                                             [&](const auto& x) { return pow(1.0 - x / m, exponent); });
@@ -88,9 +94,11 @@ struct CubeRootContact {
   double max_packing;
   double packing_margin;
 
+  void validate(std::string_view function) const { validate_packing(function, max_packing, packing_margin); }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::cbrt;
+    FLUIDBED_EXPECTS(valid_solid_fraction(phi) && valid_packing(max_packing, packing_margin));
     const double m = max_packing;
     return prefactor *
            continued_linearly_above(phi, m - packing_margin, [&](const auto& x) { return 1.0 / (1.0 - cbrt(x / m)); });
@@ -145,9 +153,11 @@ struct MaAhmadi {
 
   constexpr std::string_view name() const { return "MaAhmadi"; }
   constexpr std::string_view reference() const { return "Ma, D. & Ahmadi, G. (1986) J. Chem. Phys. 84, 3449-3450"; }
+  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     const S polynomial = 1.0 + phi * (2.5 + phi * (4.5904 + phi * 4.515439));
     const S packing = detail::continued_linearly_above(phi, max_packing - packing_margin, [](const auto& x) {
       const auto r = x / max_packing;
@@ -210,8 +220,10 @@ struct LathouwersBellan {
   constexpr std::string_view reference() const {
     return "Lathouwers, D. & Bellan, J. (2001) Int. J. Multiphase Flow 27, 2155-2187";
   }
+  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
   template <class S>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     const auto f = detail::modified_mansoori_factors(phi, max_packing, packing_margin);
     return detail::mansoori_sum(f, S(0.5 * phi));
   }

@@ -1,12 +1,14 @@
 // fluidbed — momentum exchange between two solids classes by collisions.
 //
 // K_pq [kg m⁻³ s⁻¹] per unit volume of suspension: the force per unit volume on class p is
-// K_pq (v_q − v_p); K_pq = K_qp. Preconditions: φ_p, φ_q ≥ 0, densities and diameters > 0,
-// e ∈ [0, 1], C_f ≥ 0, |Δv| ≥ 0, g_pq the contact value of the pair from a mixture RDF
-// (mixture_radial_distribution.hpp).
+// K_pq (v_q − v_p); K_pq = K_qp. Preconditions (asserted in debug builds): φ_p, φ_q ∈ [0, 1),
+// densities and diameters > 0, e ∈ [0, 1], C_f ≥ 0, |Δv| ≥ 0, g_pq > 0 the contact value of the
+// pair from a mixture RDF (mixture_radial_distribution.hpp). evaluate_checked(law, args…)
+// validates them and throws std::domain_error naming the argument and its value.
 #pragma once
 
 #include <numbers>
+#include <string>
 #include <string_view>
 
 #include "../properties.hpp"
@@ -30,11 +32,18 @@ struct SyamlalSolidSolidDrag {
     return "Syamlal, M. (1987) The particle-particle drag term in a multiparticle model of fluidization, "
            "DOE/MC/21353-2373";
   }
+  void validate(std::string_view function) const {
+    require_non_negative(function, "friction_coefficient", friction_coefficient);
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi_p, const S& phi_q, const Particles<T>& p,
                                               const Particles<T>& q, const T& restitution, const S& contact_rdf,
                                               const S& relative_speed) const {
     constexpr double pi = std::numbers::pi;
+    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi_p) && detail::valid_solid_fraction(phi_q));
+    FLUIDBED_EXPECTS(p.density > T(0) && p.diameter > T(0) && q.density > T(0) && q.diameter > T(0));
+    FLUIDBED_EXPECTS(restitution >= T(0) && restitution <= T(1) && friction_coefficient >= 0);
+    FLUIDBED_EXPECTS(value_of(contact_rdf) > 0 && value_of(relative_speed) >= 0);
     const T d_sum = p.diameter + q.diameter;
     const T mass_scale =
         p.density * p.diameter * p.diameter * p.diameter + q.density * q.diameter * q.diameter * q.diameter;
@@ -43,5 +52,24 @@ struct SyamlalSolidSolidDrag {
     return prefactor * (phi_p * phi_q) * contact_rdf * relative_speed;
   }
 };
+
+// Checked entry point: validates every argument and C_f, throwing std::domain_error naming
+// the argument and its value, then evaluates K_pq.
+template <class T>
+T evaluate_checked(const SyamlalSolidSolidDrag& law, const T& phi_p, const T& phi_q, const Particles<T>& p,
+                   const Particles<T>& q, const T& restitution, const T& contact_rdf, const T& relative_speed) {
+  const std::string function = detail::checked_function_name(law);
+  require_in_closed_open(function, "phi_p", phi_p, T(0), T(1));
+  require_in_closed_open(function, "phi_q", phi_q, T(0), T(1));
+  require_positive(function, "p.density", p.density);
+  require_positive(function, "p.diameter", p.diameter);
+  require_positive(function, "q.density", q.density);
+  require_positive(function, "q.diameter", q.diameter);
+  require_in_closed(function, "restitution", restitution, T(0), T(1));
+  require_positive(function, "contact_rdf", contact_rdf);
+  require_non_negative(function, "relative_speed", relative_speed);
+  law.validate(function);
+  return law(phi_p, phi_q, p, q, restitution, contact_rdf, relative_speed);
+}
 
 }  // namespace fluidbed::kinetic_theory

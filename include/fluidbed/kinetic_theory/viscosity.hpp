@@ -4,9 +4,10 @@
 //
 // Shape: law(φ, Θ, g0, material) → μ ≥ 0, templated on the scalar; shear-viscosity laws
 // also give law.kinetic(...) and law.collisional(...). Every form is ∝ √Θ, so ∂μ/∂Θ =
-// μ/(2Θ), +∞ at Θ = 0 (the true derivative; the value is 0 there). Preconditions: φ ∈ [0, 1),
-// Θ ≥ 0, material as in granular_state.hpp; HrenyaSinclairViscosity also length_scale > 0.
-// Frictional viscosity: friction.hpp.
+// μ/(2Θ), +∞ at Θ = 0 (the true derivative; the value is 0 there). Preconditions (asserted in
+// debug builds): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in granular_state.hpp;
+// HrenyaSinclairViscosity also length_scale > 0. evaluate_checked(law, φ, Θ, g0, material)
+// validates them and throws std::domain_error. Frictional viscosity: friction.hpp.
 #pragma once
 
 #include <cmath>
@@ -86,9 +87,11 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
   constexpr explicit HrenyaSinclairViscosity(double length) : length_scale(length) {}
   constexpr std::string_view name() const { return "HrenyaSinclair"; }
   constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
+  void validate(std::string_view function) const { require_positive(function, "length_scale", length_scale); }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
+    FLUIDBED_EXPECTS(length_scale > 0);
     const T e = m.restitution, three_minus_e = 3.0 - e;
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
     const S bracket =
@@ -107,6 +110,7 @@ struct LunBulkViscosity {
   constexpr std::string_view reference() const { return detail::references::lun_1984; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     return (4.0 / 3.0) * detail::collisional_transfer(phi, theta, g0, m);
   }
 };

@@ -233,10 +233,14 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> gauss_radau(std::span<const T> m, con
 // realizability()); the rule for R (Gauss–Radau with ⌊R/2⌋ + 1 nodes if R is odd and radau is
 // set, else Gauss with ⌊R/2⌋ nodes); then, while the rule has > 1 node and is degenerate, the
 // Gauss rule with one node less. Allocation-free, no exceptions; statuses as invert().
+// Preconditions: the three thresholds of `options` >= 0 (NaN moments are a status, NaN options
+// are not).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE AdaptiveInversionResult<T, N> invert_adaptive(std::span<const T> m,
                                                                    const AdaptiveOptions<T>& options = {}) {
   FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N));
+  FLUIDBED_EXPECTS(options.min_weight_fraction >= T(0) && options.min_node_separation >= T(0) &&
+                   options.boundary_tolerance >= T(0));
   const Support support = options.inversion.support;
   const detail::ScaledAnalysis<T, N> a = detail::analyse<T, N>(m, support);
   AdaptiveInversionResult<T, N> out;

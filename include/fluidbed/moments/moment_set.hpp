@@ -166,11 +166,12 @@ T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   if (k < 0) require_positive(function, "edges[0] (negative order k)", psd.edges[0]);
   for (std::size_t i = 1; i < psd.edges.size(); ++i)
     if (!fluidbed::detail::is_finite_number(psd.edges[i]) || !(psd.edges[i] > psd.edges[i - 1]))
-      fluidbed::detail::throw_domain_error(function, "edges[i]", psd.edges[i], "must be finite and increasing");
+      fluidbed::detail::throw_domain_error(function, indexed_argument("edges", i), psd.edges[i],
+                                           "must be finite and increasing");
   T total(0);
-  for (const T& f : psd.fractions) {
-    require_non_negative(function, "fractions[i]", f);
-    total += f;
+  for (std::size_t i = 0; i < psd.fractions.size(); ++i) {
+    require_non_negative(function, indexed_argument("fractions", i), psd.fractions[i]);
+    total += psd.fractions[i];
   }
   require_positive(function, "sum of fractions", total);
   require_in_half_open(function, "voidage", voidage, T(0), T(1));
@@ -305,6 +306,7 @@ FLUIDBED_HOST_DEVICE void lognormal_moments(const T& m0, const LognormalParamete
 template <class T>
 FLUIDBED_HOST_DEVICE LognormalParameters<T> lognormal_matching(const T& m0, const T& m1, const T& m2) {
   using std::log;
+  FLUIDBED_EXPECTS(m0 > T(0) && m1 > T(0));
   LognormalParameters<T> p;
   p.sigma_squared = log((m0 / m1) * (m2 / m1));
   p.mu = log(m1 / m0) - p.sigma_squared / T(2);

@@ -109,6 +109,7 @@ template <class T>
 FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
   using std::abs;
   using std::isfinite;
+  FLUIDBED_EXPECTS(!m.empty() && m[0] > T(0));
   MomentScaling s;
   s.weight_exponent = detail::nearest_power_of_two_exponent(m[0]);
   if (m.size() > 1) {

@@ -117,7 +117,7 @@ template <class Law, class T>
 requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law, const T& superficial_velocity,
                                                                  const Fluid<T>& fluid, const Particles<T>& particles,
                                                                  const T& gravity = T(standard_gravity)) {
-  FLUIDBED_EXPECTS(superficial_velocity > T(0) && particles.density > fluid.density && gravity > T(0));
+  FLUIDBED_EXPECTS(superficial_velocity > T(0) && detail::valid_settling_inputs(fluid, particles, gravity));
   const detail::EquilibriumResidual<Law, T> residual{law, superficial_velocity, fluid, particles.diameter,
                                                      (particles.density - fluid.density) * gravity};
   const T at_one = residual(T(1));
@@ -182,6 +182,7 @@ template <class T>
 std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_velocity, const Fluid<T>& fluid,
                                                      const Particles<T>& particles,
                                                      const T& gravity = T(standard_gravity)) {
+  FLUIDBED_EXPECTS(superficial_velocity > T(0));
   const T terminal = terminal_velocity_dallavalle(fluid, particles, gravity);
   if (!(superficial_velocity < terminal)) return std::nullopt;
   const T exponent = richardson_zaki_exponent_mazzei(terminal_reynolds(fluid, particles.diameter, terminal));
@@ -224,6 +225,16 @@ requires DragLawFor<Law, T> std::optional<T> voidage_ratio(const Law& law, const
   return *voidage / richardson_zaki_voidage;
 }
 
+// As voidage_ratio, validating its arguments (std::domain_error naming the argument and its value).
+template <class Law, class T>
+requires DragLawFor<Law, T> std::optional<T> voidage_ratio_checked(const Law& law, const T& reynolds,
+                                                                   const T& richardson_zaki_voidage) {
+  constexpr std::string_view function = "voidage_ratio";
+  require_positive(function, "reynolds", reynolds);
+  require_in_open(function, "richardson_zaki_voidage", richardson_zaki_voidage, T(0), T(1));
+  return voidage_ratio(law, reynolds, richardson_zaki_voidage);
+}
+
 // The "equivalent exponent" of a law (seed 000 eq. 3.64): writing its β as
 //   β_classical = ¾ C_D(Re) ρ_f w (1 − ε)/d · φ(ε, Re)   (eq. 3.61),
 //   ψ_e(ε, Re) = −ln φ / ln ε,
@@ -244,6 +255,15 @@ requires DragLawFor<Law, T> T equivalent_exponent(const Law& law, const T& voida
   return -log(beta / single) / log(voidage);
 }
 
+// As equivalent_exponent, validating its arguments (std::domain_error naming the argument and its value).
+template <class Coefficient = drag::DallavalleCoefficient, class Law, class T>
+requires DragLawFor<Law, T> T equivalent_exponent_checked(const Law& law, const T& voidage, const T& reynolds) {
+  constexpr std::string_view function = "equivalent_exponent";
+  require_in_open(function, "voidage", voidage, T(0), T(1));
+  require_non_negative(function, "reynolds", reynolds);
+  return equivalent_exponent<Coefficient>(law, voidage, reynolds);
+}
+
 // ----------------------------------------------------------------------------- bed height
 
 // h = h₀ (1 − ε₀)/(1 − ε): the height of a bed of fixed solids inventory at voidage ε,
@@ -251,7 +271,8 @@ requires DragLawFor<Law, T> T equivalent_exponent(const Law& law, const T& voida
 // Preconditions: h₀ > 0, ε₀, ε ∈ (0, 1).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T bed_height(const T& initial_height, const T& initial_voidage, const T& voidage) {
-  FLUIDBED_EXPECTS(initial_height > T(0) && initial_voidage < T(1) && voidage < T(1));
+  FLUIDBED_EXPECTS(initial_height > T(0) && initial_voidage > T(0) && initial_voidage < T(1) && voidage > T(0) &&
+                   voidage < T(1));
   return initial_height * (1 - initial_voidage) / (1 - voidage);
 }
 

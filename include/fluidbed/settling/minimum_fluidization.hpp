@@ -6,7 +6,8 @@
 //                              at equilibrium),
 //   Ar    = ρ_f (ρ_p − ρ_f) g d³ / μ_f².
 // d is Particles::diameter, the volume-equivalent sphere diameter. Heavier-than-fluid
-// particles only; the `_checked` functions throw std::domain_error.
+// particles only. The hot-path functions assert their preconditions in debug builds; the
+// `_checked` functions throw std::domain_error naming the argument and its value.
 #pragma once
 
 #include <cmath>
@@ -18,6 +19,17 @@
 #include "terminal_velocity.hpp"
 
 namespace fluidbed::settling {
+
+namespace detail {
+
+// ε_mf ∈ (0, 1) and φ_s ∈ (0, 1], for the checked Ergun forms.
+template <class T>
+void validate_ergun_bed(std::string_view function, const T& voidage, const T& sphericity) {
+  require_in_open(function, "voidage", voidage, T(0), T(1));
+  require_in_half_open(function, "sphericity", sphericity, T(0), T(1));
+}
+
+}  // namespace detail
 
 // Ergun, S. (1952), "Fluid flow through packed columns", Chem. Eng. Prog. 48, 89–94, at
 // the voidage ε_mf of the bed at minimum fluidization, with the sphericity φ_s as in Kunii,
@@ -63,16 +75,32 @@ template <class T>
 T minimum_fluidization_velocity_ergun(const Fluid<T>& fluid, const Particles<T>& particles, const T& voidage,
                                       const T& sphericity = T(1), const T& gravity = T(standard_gravity)) {
   return detail::velocity_from_reynolds(
-      minimum_fluidization_reynolds_ergun(archimedes(fluid, particles, gravity), voidage, sphericity), fluid,
-      particles);
+      minimum_fluidization_reynolds_ergun(detail::archimedes_of_settling_system(fluid, particles, gravity), voidage,
+                                          sphericity),
+      fluid, particles);
 }
 
 // u_mf from Wen & Yu (1966).
 template <class T>
 T minimum_fluidization_velocity_wen_yu(const Fluid<T>& fluid, const Particles<T>& particles,
                                        const T& gravity = T(standard_gravity)) {
-  return detail::velocity_from_reynolds(minimum_fluidization_reynolds_wen_yu(archimedes(fluid, particles, gravity)),
-                                        fluid, particles);
+  return detail::velocity_from_reynolds(
+      minimum_fluidization_reynolds_wen_yu(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid,
+      particles);
+}
+
+template <class T>
+T minimum_fluidization_reynolds_ergun_checked(const T& archimedes, const T& voidage, const T& sphericity = T(1)) {
+  constexpr std::string_view function = "minimum_fluidization_reynolds_ergun";
+  require_non_negative(function, "archimedes", archimedes);
+  detail::validate_ergun_bed(function, voidage, sphericity);
+  return minimum_fluidization_reynolds_ergun(archimedes, voidage, sphericity);
+}
+
+template <class T>
+T minimum_fluidization_reynolds_wen_yu_checked(const T& archimedes) {
+  require_non_negative("minimum_fluidization_reynolds_wen_yu", "archimedes", archimedes);
+  return minimum_fluidization_reynolds_wen_yu(archimedes);
 }
 
 template <class T>
@@ -80,8 +108,7 @@ T minimum_fluidization_velocity_ergun_checked(const Fluid<T>& fluid, const Parti
                                               const T& sphericity = T(1), const T& gravity = T(standard_gravity)) {
   constexpr std::string_view function = "minimum_fluidization_velocity_ergun";
   detail::validate_settling(function, fluid, particles, gravity);
-  require_in_open(function, "voidage", voidage, T(0), T(1));
-  require_in_half_open(function, "sphericity", sphericity, T(0), T(1));
+  detail::validate_ergun_bed(function, voidage, sphericity);
   return minimum_fluidization_velocity_ergun(fluid, particles, voidage, sphericity, gravity);
 }
 

@@ -39,13 +39,6 @@ FLUIDBED_HOST_DEVICE S khan_richardson_wall_factor(const S& wall_ratio) {
   return 1.0 - 2.4 * pow(wall_ratio, 0.27);
 }
 
-// Throws unless 0 <= d/D < 1.
-template <class T>
-void require_wall_ratio(std::string_view function, const T& wall_ratio) {
-  if (!fluidbed::detail::is_finite_number(wall_ratio) || !(wall_ratio >= T(0)) || !(wall_ratio < T(1)))
-    fluidbed::detail::throw_domain_error(function, "wall_ratio", wall_ratio, "must lie in [0, 1)");
-}
-
 }  // namespace detail
 
 // ----------------------------------------------------------------------------- exponents
@@ -262,7 +255,7 @@ T richardson_zaki_exponent_mazzei_derivative_checked(const T& terminal_reynolds)
 template <class T>
 T richardson_zaki_exponent_1954_checked(const T& terminal_reynolds, const std::type_identity_t<T>& wall_ratio = T(0)) {
   require_non_negative("richardson_zaki_exponent_1954", "terminal_reynolds", terminal_reynolds);
-  detail::require_wall_ratio("richardson_zaki_exponent_1954", wall_ratio);
+  require_in_closed_open("richardson_zaki_exponent_1954", "wall_ratio", wall_ratio, T(0), T(1));
   return richardson_zaki_exponent_1954(terminal_reynolds, wall_ratio);
 }
 

@@ -16,7 +16,9 @@
 // derivations use.
 //
 // Heavier-than-fluid particles only (ρ_p > ρ_f: Ar > 0). The hot-path functions assert
-// their preconditions in debug builds; the `_checked` ones throw std::domain_error.
+// their preconditions in debug builds (Re_t(Ar): Ar ≥ 0; u_t: ρ_f, μ_f, d, g > 0 and
+// ρ_p > ρ_f, all finite); the `_checked` ones throw std::domain_error naming the argument and
+// its value.
 #pragma once
 
 #include <boost/math/tools/roots.hpp>
@@ -32,6 +34,14 @@
 namespace fluidbed::settling {
 
 namespace detail {
+
+// The hot-path form of validate_settling, for FLUIDBED_EXPECTS (NaN fails every comparison).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr bool valid_settling_inputs(const Fluid<T>& fluid, const Particles<T>& particles,
+                                                          const T& gravity) {
+  return fluid.density > T(0) && fluid.viscosity > T(0) && particles.diameter > T(0) && gravity > T(0) &&
+         particles.density > fluid.density;
+}
 
 // Throws unless ρ_f, μ_f, d, g are finite and > 0 and ρ_p is finite and > ρ_f.
 template <class T>
@@ -50,6 +60,13 @@ void validate_settling(std::string_view function, const Fluid<T>& fluid, const P
 template <class T>
 T velocity_from_reynolds(const T& reynolds, const Fluid<T>& fluid, const Particles<T>& particles) {
   return reynolds * fluid.viscosity / (fluid.density * particles.diameter);
+}
+
+// Ar of a validated system, the hot-path preconditions of every u_t and u_mf asserted.
+template <class T>
+T archimedes_of_settling_system(const Fluid<T>& fluid, const Particles<T>& particles, const T& gravity) {
+  FLUIDBED_EXPECTS(valid_settling_inputs(fluid, particles, gravity));
+  return archimedes(fluid, particles, gravity);
 }
 
 }  // namespace detail
@@ -122,35 +139,60 @@ T terminal_reynolds_schiller_naumann(const T& archimedes) {
 template <class T>
 T terminal_velocity_stokes(const Fluid<T>& fluid, const Particles<T>& particles,
                            const T& gravity = T(standard_gravity)) {
-  return detail::velocity_from_reynolds(terminal_reynolds_stokes(archimedes(fluid, particles, gravity)), fluid,
-                                        particles);
+  return detail::velocity_from_reynolds(
+      terminal_reynolds_stokes(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
 
 // u_t = √(4 g d (ρ_p − ρ_f) / (3 · 0.44 ρ_f)) (seed 000 eq. 3.41).
 template <class T>
 T terminal_velocity_newton(const Fluid<T>& fluid, const Particles<T>& particles,
                            const T& gravity = T(standard_gravity)) {
-  return detail::velocity_from_reynolds(terminal_reynolds_newton(archimedes(fluid, particles, gravity)), fluid,
-                                        particles);
+  return detail::velocity_from_reynolds(
+      terminal_reynolds_newton(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
 
 // Dallavalle's u_t, the one seed 000 uses with Richardson–Zaki (see terminal_reynolds_dallavalle).
 template <class T>
 T terminal_velocity_dallavalle(const Fluid<T>& fluid, const Particles<T>& particles,
                                const T& gravity = T(standard_gravity)) {
-  return detail::velocity_from_reynolds(terminal_reynolds_dallavalle(archimedes(fluid, particles, gravity)), fluid,
-                                        particles);
+  return detail::velocity_from_reynolds(
+      terminal_reynolds_dallavalle(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
 
 // Schiller–Naumann's u_t (see terminal_reynolds_schiller_naumann for the jump at Re = 1000).
 template <class T>
 T terminal_velocity_schiller_naumann(const Fluid<T>& fluid, const Particles<T>& particles,
                                      const T& gravity = T(standard_gravity)) {
-  return detail::velocity_from_reynolds(terminal_reynolds_schiller_naumann(archimedes(fluid, particles, gravity)),
-                                        fluid, particles);
+  return detail::velocity_from_reynolds(
+      terminal_reynolds_schiller_naumann(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid,
+      particles);
 }
 
 // ----------------------------------------------------------------------------- checked
+
+template <class T>
+T terminal_reynolds_stokes_checked(const T& archimedes) {
+  require_non_negative("terminal_reynolds_stokes", "archimedes", archimedes);
+  return terminal_reynolds_stokes(archimedes);
+}
+
+template <class T>
+T terminal_reynolds_newton_checked(const T& archimedes) {
+  require_non_negative("terminal_reynolds_newton", "archimedes", archimedes);
+  return terminal_reynolds_newton(archimedes);
+}
+
+template <class T>
+T terminal_reynolds_dallavalle_checked(const T& archimedes) {
+  require_non_negative("terminal_reynolds_dallavalle", "archimedes", archimedes);
+  return terminal_reynolds_dallavalle(archimedes);
+}
+
+template <class T>
+T terminal_reynolds_schiller_naumann_checked(const T& archimedes) {
+  require_non_negative("terminal_reynolds_schiller_naumann", "archimedes", archimedes);
+  return terminal_reynolds_schiller_naumann(archimedes);
+}
 
 template <class T>
 T terminal_velocity_stokes_checked(const Fluid<T>& fluid, const Particles<T>& particles,
