@@ -3,9 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Core>
-
 #include <algorithm>
 #include <array>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -14,23 +14,18 @@
 #include <utility>
 #include <vector>
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
-
 #include "fluidbed/moments/batched.hpp"
 #include "fluidbed/moments/eigen_backend.hpp"
 #include "fluidbed/moments/inversion.hpp"
+#include "fluidbed/moments/realizability.hpp"
+#include "same_arithmetic.hpp"
 
 using namespace fluidbed::moments;
 
 namespace {
 
-// Floating-point contraction (FMA) may round the lanes and the per-cell code differently;
-// without it they perform the same operations and must agree to the bit.
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA)
-constexpr bool exact_agreement = false;
-#else
-constexpr bool exact_agreement = true;
-#endif
+// Lanes and per-cell code agree to the bit unless contraction rounds them differently.
+using fluidbed::test::exact_agreement;
 
 template <class T, int N>
 using Cell = std::array<T, 2 * N>;
@@ -94,6 +89,29 @@ std::pair<T, T> measured_spread(const Cell<T, N>& m, const InversionResult<T, N>
   return {spread_x, spread_w};
 }
 
+// A set on the realizability boundary in exact arithmetic (two atoms asked for three nodes)
+// has a coefficient that is rounding noise (ζ_4 ≈ 1e-15 ζ_1 here), and the ones after it are
+// noise over noise: two code paths that round differently may then disagree between ok and
+// reduced. True when both statuses are one of those and some coefficient of the set lies
+// within 1000 ε of the boundary, relative to ζ_1 = m_1/m_0 on [0, ∞) or to m_2/m_0 on the line.
+template <class T, int N>
+bool on_boundary_within_rounding(const Cell<T, N>& m, InversionStatus a, InversionStatus b, Support support) {
+  const auto acceptable = [](InversionStatus s) { return s == InversionStatus::ok || s == InversionStatus::reduced; };
+  if (!acceptable(a) || !acceptable(b)) return false;
+  const RealizabilityReport<T, N> report = realizability<T, N>(std::span<const T>(m), support);
+  T smallest = std::numeric_limits<T>::infinity(), scale;
+  if (support == Support::positive_half_line) {
+    scale = report.zeta[0];
+    for (int j = 0; j < report.zeta_count; ++j) smallest = std::min(smallest, T(std::abs(report.zeta[j])));
+  } else {
+    scale = m[2] / m[0];
+    smallest = std::abs(report.failing_value);
+    for (int k = 1; k < report.recurrence.size; ++k)
+      smallest = std::min(smallest, T(std::abs(report.recurrence.beta[k])));
+  }
+  return smallest <= T(1000) * std::numeric_limits<T>::epsilon() * std::abs(scale);
+}
+
 template <class T>
 bool same_bits_or_both_nan(T a, T b) {
   return a == b || (std::isnan(a) && std::isnan(b));
@@ -114,6 +132,9 @@ int check_against_per_cell(const std::vector<Cell<T, N>>& cells, Support support
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const InversionResult<T, N> r = invert<T, N>(std::span<const T>(cells[c]), {.support = support});
     INFO("N = " << N << ", cell " << c << ", m_0 = " << double(cells[c][0]));
+    if (b.status[c] != r.status && !exact_agreement &&
+        on_boundary_within_rounding<T, N>(cells[c], r.status, b.status[c], support))
+      continue;
     REQUIRE(b.status[c] == r.status);
     REQUIRE(b.sizes[c] == r.quadrature.size);
     ok += r.status == InversionStatus::ok;
@@ -137,7 +158,8 @@ int check_against_per_cell(const std::vector<Cell<T, N>>& cells, Support support
       if (!same_bits_or_both_nan(b.nodes[c][i], r.quadrature.nodes[i]))
         CHECK(std::abs(b.nodes[c][i] - r.quadrature.nodes[i]) <= 32 * eps * norm + 4 * spread_x);
       if (!same_bits_or_both_nan(b.weights[c][i], r.quadrature.weights[i]))
-        CHECK(std::abs(b.weights[c][i] - r.quadrature.weights[i]) <= 32 * eps * cells[c][0] * (norm / gap) + 4 * spread_w);
+        CHECK(std::abs(b.weights[c][i] - r.quadrature.weights[i]) <=
+              32 * eps * cells[c][0] * (norm / gap) + 4 * spread_w);
     }
   }
   return ok;
@@ -172,8 +194,7 @@ std::vector<Cell<T, N>> random_cells(std::mt19937_64& rng, int count) {
     }
     const int atoms = c % 4 == 0 ? N : c % 4 == 1 ? N + 1 : 2 * N + 3;
     std::vector<std::pair<long double, long double>> measure;
-    for (int i = 0; i < atoms; ++i)
-      measure.emplace_back(1e-5L * std::pow(100.0L, u(rng)), density * (0.05L + u(rng)));
+    for (int i = 0; i < atoms; ++i) measure.emplace_back(1e-5L * std::pow(100.0L, u(rng)), density * (0.05L + u(rng)));
     cells.push_back(discrete_moments<T, N>(measure));
   }
   return cells;
@@ -199,7 +220,7 @@ std::vector<Cell<T, N>> degenerate_cells() {
   for (int k = 0; k < 2 * N; ++k) m[k] = std::pow(T(-2), T(k));
   cells.push_back(m);  // a Dirac at −2: not realizable on [0, ∞), one node on the line
   for (int k = 0; k < 2 * N; ++k) m[k] = T(k % 2 == 0 ? 1 : 0);
-  cells.push_back(m);  // ±1 with weights 1/2: zero mean
+  cells.push_back(m);                                                       // ±1 with weights 1/2: zero mean
   cells.push_back(discrete_moments<T, N>({{1e-4L, 2.0L}, {3e-4L, 1.0L}}));  // two atoms: two nodes
   m = discrete_moments<T, N>({{1e-4L, 2.0L}, {3e-4L, 1.0L}, {7e-4L, 0.5L}});
   m[2 * N - 1] *= T(0.5);
