@@ -3,6 +3,15 @@
 
 #include <cassert>
 
+// -ffast-math (through -ffinite-math-only) lets the compiler assume no value is NaN or ±∞,
+// which folds away the checks that turn such inputs into exceptions and statuses (checked
+// entry points, moment-inversion statuses, batched lane guards) and the infinities returned
+// on purpose: unsupported (docs/README.md). Define FLUIDBED_ACCEPT_FAST_MATH to build anyway
+// and take on the responsibility that no NaN or ±∞ ever reaches the library.
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__ && !defined(FLUIDBED_ACCEPT_FAST_MATH)
+#error "fluidbed: -ffast-math/-ffinite-math-only is unsupported (its NaN and infinity checks would be folded away)"
+#endif
+
 // Every per-cell function is usable from CUDA/HIP device code when the headers are
 // compiled by a device compiler; on the host the macro expands to nothing.
 #if defined(__CUDACC__) || defined(__HIPCC__)
