@@ -2,7 +2,8 @@
 # Builds and runs the whole test suite: a debug build with warnings as errors, the same
 # suite under AddressSanitizer + UndefinedBehaviorSanitizer, and with -O3 -march=native
 # (floating-point contraction on, as GCC does by default where the target has FMA); and
-# checks that the reference tables in tests/reference/ are what their mpmath generators give.
+# checks that the reference tables in tests/reference/ are what their mpmath generators give;
+# then runs the libFuzzer targets for a bounded time (FLUIDBED_FUZZ_SECONDS each, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
@@ -32,3 +33,6 @@ for config in debug sanitize optimized; do
   cmake --build "build/$config" -j "$jobs"
   ctest --test-dir "build/$config" -j "$jobs" --output-on-failure
 done
+
+# libFuzzer targets (clang, ASan + UBSan): each for a bounded time, from the committed seeds.
+bash scripts/run_fuzzers.sh "${FLUIDBED_FUZZ_SECONDS:-60}"

@@ -1,0 +1,890 @@
+// libFuzzer target for moment inversion (include/fluidbed/moments/).
+//
+// One input is one moment set, decoded either as garbage (raw values: NaN, ±∞, subnormals, huge,
+// negative) or built from a distribution (atoms, log-normal, Gaussian, gamma, sieve analysis),
+// optionally corrupted in one moment as advection corrupts them (seed 003), in double or float.
+// Every entry point is called on it and its documented contract checked:
+//   invert (Wheeler and product-difference, automatic and QL solvers, both supports) at the exact
+//   capacity N = n and at capacity 8; invert_eigen; realizability; invert_adaptive (with
+//   Gauss–Radau); gauss_radau; recurrence; correct_moments and mcgraw_correct;
+//   sieve_moment_checked; invert_batched against the per-cell invert; and the exact power-of-two
+//   unit invariance the headers promise.
+// The contract of an inversion (inversion.hpp, realizability.hpp): "never NaN without a status,
+// never an exception or abort": ok gives all n nodes, reduced fewer, any other status none; nodes
+// ascending and finite, weights finite and >= 0, and the Gauss rule reproduces m_0 and m_1.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fluidbed/moments.hpp"
+#include "fuzz_input.hpp"
+
+using namespace fluidbed::moments;
+using fluidbed::fuzz::close;
+using fluidbed::fuzz::Input;
+using fluidbed::fuzz::is_finite;
+
+namespace {
+
+constexpr int kCapacity = 8;  // the runtime node counts of the span entry points: 1 … 8
+
+// --------------------------------------------------------------------------------- known issues
+
+// Issues this fuzzer found and that are reported; the inputs that trigger them are skipped until
+// they are fixed. Build with -DFLUIDBED_FUZZ_SKIP_KNOWN_ISSUES=0 to see them fail.
+#ifndef FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES
+#define FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES 1
+#endif
+
+// 1. Product-difference stops computing ζ at the first ζ_j <= 0 (recurrence.hpp), a legitimate
+// value on the real line (N(1, 1) has ζ_3 < 0): the rule is cut there, status reduced where
+// Wheeler's is complete; and a non-finite ζ_{2k+1} enters α_k unchecked (the half line's ζ scan
+// catches it, the real line's β test does not): status reduced with NaN nodes.
+bool product_difference_on_real_line(const InversionOptions& o) {
+  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && o.algorithm == RecurrenceAlgorithm::product_difference &&
+         o.support == Support::real_line;
+}
+
+// 2. The three-node solver (jacobi_eigen.hpp) forms adj(B − λI), whose entries grow like the
+// square of the spread of the nodes (in units of the mean, as it sees them), squares them and
+// divides by the product planar·‖v‖ ~ spread⁶: beyond spread ~ max^(1/6) (5.6e51 in double, 2.6e6
+// in float, e.g. after a corrupted moment) the rule is NaN under status ok or reduced, and already
+// below it wrong (float, nodes 8.7e-8, 2.1e-7, 1.92: it gives 1.79e-7 twice). The batched path
+// shares the kernel. True for a 3-node rule of such a spread, or a NaN one.
+template <class T, int N>
+bool three_node_out_of_range(const Quadrature<T, N>& q, std::span<const T> m) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || q.size != 3) return false;
+  const T mean = m[1] / m[0];  // the length unit of scaling_of (recurrence.hpp)
+  const T unit = mean > T(0) ? mean : std::sqrt(std::abs(m[2] / m[0]));
+  const T spread = (q.nodes[2] - q.nodes[0]) / unit;
+  return !(spread < std::cbrt(std::sqrt(std::numeric_limits<T>::max())) / T(16));
+}
+
+// 3. The closed-form two-node rule (jacobi_eigen.hpp) forms the node near α_0 as centre ∓ radius,
+// which cancels when the other node is far: that node is off by ~ε|x_far| (2.8e-10 at 0.1 beside
+// −5.9e6, where the QL is exact) and its weight, through (x − α_0)², by ~(ε|x_far|/√β_1)²
+// relative: Σw misses m_0 by 4.8e-10 there. The relative error this allows, 0 once fixed.
+template <class T, int N>
+T closed_form_cancellation(const Quadrature<T, N>& q) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || q.size != 2) return T(0);
+  const T m0 = q.weights[0] + q.weights[1];
+  const T coupling = std::sqrt(q.weights[0] * q.weights[1]) * (q.nodes[1] - q.nodes[0]) / m0;  // √β_1
+  const T far = std::max(std::abs(q.nodes[0]), std::abs(q.nodes[1]));
+  const T relative = std::numeric_limits<T>::epsilon() * far / coupling;
+  return T(100) * relative * relative;
+}
+
+// 4. boundary_distance on the real line divides the smallest β_k by m_2/m_0; a one-node rule tests
+// no β, and a Dirac at 0 (zero mean and variance: particles at rest) has m_2 = 0, so it is
+// 0/0 = NaN where realizability.hpp promises 1 (status reduced, one node at 0).
+template <class T>
+bool nan_boundary_distance_of_dirac_at_zero(Support support, int nodes, const T& distance) {
+  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && support == Support::real_line && nodes == 1 && std::isnan(distance);
+}
+
+// 5. A finite set whose exactly scaled moments overflow (m_k/(m_0 mean^k) beyond the range: in
+// float a log-normal with σ_g >~ 2.5 given 16 moments) is invalid_input for invert() but is
+// analysed on the overflowed values by realizability() and invert_adaptive(), which report its
+// realizable prefix (with ±∞ or NaN in the recurrence they report). Among such sets: any
+// real-line set with a tiny positive mean, which scaling_of takes as the length scale where the
+// spread is many orders larger (N(1e-30, 1) with 16 moments, while N(0, 1) inverts); the batched
+// path uses √(m_2/m_0) for a mean that is not a normal number, and inverts what invert() refuses.
+template <class T>
+bool scaled_moments_overflow(std::span<const T> m) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || detail::input_status(m) != InversionStatus::ok) return false;
+  std::array<T, 2 * kCapacity> scaled{};
+  scale_moments(m, scaling_of(m), std::span<T>(scaled.data(), m.size()));
+  for (std::size_t k = 0; k < m.size(); ++k)
+    if (!std::isfinite(scaled[k])) return true;
+  return false;
+}
+
+// 6. Nothing checks that the rule (or the recurrence) is finite once computed: Wheeler's stop
+// test looks at β_k, not α_k, so a set whose last moment is corrupted to 0 overflows α_{n−1}
+// (float, 16 moments: α_7 = −∞) and invert() returns a node −∞ under status ok, realizability()
+// an α of −∞ under ok; and a set whose mean m_1/m_0 is beyond the range ({2e-139, 3.7e210, 1, …},
+// real line) unscales to a node +∞ under status reduced (correct_moments() calls it unchanged), as
+// does a variance beyond it to a β_1 of +∞ in realizability().
+template <class T>
+bool mean_out_of_range(std::span<const T> m) {
+  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && m.size() >= 2 && !std::isfinite(m[1] / m[0]);
+}
+
+template <class T, int N>
+bool infinite_rule(const Quadrature<T, N>& q) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
+  for (int i = 0; i < q.size; ++i)
+    if (std::isinf(q.nodes[i]) || std::isinf(q.weights[i])) return true;
+  return false;
+}
+
+// 7. correct_moments' fallbacks write M_k = M_0 r^k q^{k(k−1)/2} (r = M_1/M_0, q = M_0 M_2/M_1²)
+// without checking that it is representable: a broad set (large q) overflows to +∞ at high k, in
+// float a set in SI units (M_k ~ 1e-4^k) underflows to 0, and where r or q themselves are not
+// normal numbers (a set spanning the whole range) the moments are NaN — all under status
+// lognormal (or monodisperse), where the correction should fail. McGraw's step multiplies a
+// moment by c = exp(ln c), computed apart: a moment corrupted by more than the range (M_2 = 8e-323
+// in a set in SI units) gets c = ∞ (or 0), and the moment ∞ under status mcgraw.
+template <class T>
+bool correction_out_of_range(CorrectionStatus status, const T& value, std::span<const T> m) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
+  const bool extreme = value == std::numeric_limits<T>::infinity() || value == T(0);
+  if (status == CorrectionStatus::mcgraw) return extreme;
+  if (status != CorrectionStatus::lognormal && status != CorrectionStatus::monodisperse) return false;
+  const bool parameters = std::isnormal(m[1] / m[0]) && (m.size() < 3 || std::isnormal((m[0] / m[1]) * (m[2] / m[1])));
+  return extreme || !parameters;
+}
+
+// 8. sieve_moment_checked validates the arguments, not the result: finite increasing edges whose
+// powers overflow (edges 1e-31 and 5e27 with k = −3) give +∞. Only plausible analyses (edges 0 or
+// within [1e-9, 1e3], fractions <= 1e20) must give a finite moment until it rejects the others.
+template <class T>
+bool unrepresentable_sieve_moment_accepted(const SieveAnalysis<T>& psd) {
+  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
+  for (const T& e : psd.edges)
+    if (e != T(0) && !(e >= T(1e-9) && e <= T(1e3))) return true;
+  for (const T& f : psd.fractions)
+    if (!(f <= T(1e20))) return true;
+  return false;
+}
+
+// ------------------------------------------------------------------------------------- contract
+
+const char* name(InversionStatus s) {
+  switch (s) {
+    case InversionStatus::ok:
+      return "ok";
+    case InversionStatus::reduced:
+      return "reduced";
+    case InversionStatus::zero_mass:
+      return "zero_mass";
+    case InversionStatus::not_realizable:
+      return "not_realizable";
+    case InversionStatus::invalid_input:
+      return "invalid_input";
+    case InversionStatus::eigen_failure:
+      return "eigen_failure";
+  }
+  return "<not an InversionStatus>";
+}
+
+bool valid(InversionStatus s) {
+  return s == InversionStatus::ok || s == InversionStatus::reduced || s == InversionStatus::zero_mass ||
+         s == InversionStatus::not_realizable || s == InversionStatus::invalid_input ||
+         s == InversionStatus::eigen_failure;
+}
+
+bool has_nodes(InversionStatus s) { return s == InversionStatus::ok || s == InversionStatus::reduced; }
+
+// For the violation messages only (built when a check fails).
+template <class T>
+std::string text(std::span<const T> values) {
+  std::string out = "{";
+  char buffer[40];
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    std::snprintf(buffer, sizeof buffer, "%s%.17g", k ? ", " : "", double(values[k]));
+    out += buffer;
+  }
+  return out + "}";
+}
+
+template <class T>
+bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+// Tolerance of the checks that hold to rounding: generous (QL sweeps accumulate), yet far below
+// any real error.
+template <class T>
+T rounding_tolerance(int nodes) {
+  return T(1000) * T(nodes) * std::numeric_limits<T>::epsilon();
+}
+
+// What every quadrature an entry point returns with nodes must satisfy.
+template <class T, int N>
+void check_rule(const char* entry, const Quadrature<T, N>& q, std::span<const T> m, Support support) {
+  FUZZ_CHECK(q.size >= 1 && q.size <= N, "%s: %d nodes with a status that has nodes; moments %s", entry, q.size,
+             text(m).c_str());
+  if (three_node_out_of_range(q, m) || infinite_rule(q)) return;
+  T sum(0), first(0), scale(0), gap = std::numeric_limits<T>::infinity();
+  for (int i = 0; i < q.size; ++i) {
+    FUZZ_CHECK(is_finite(q.nodes[i]) && is_finite(q.weights[i]) && q.weights[i] >= T(0),
+               "%s: node %d = %.17g, weight %.17g (must be finite, weight >= 0); moments %s", entry, i,
+               double(q.nodes[i]), double(q.weights[i]), text(m).c_str());
+    FUZZ_CHECK(i == 0 || q.nodes[i - 1] <= q.nodes[i], "%s: nodes not ascending at %d; moments %s", entry, i,
+               text(m).c_str());
+    sum += q.weights[i];
+    first += q.weights[i] * q.nodes[i];
+    scale = std::max(scale, std::abs(q.nodes[i]));
+    if (i > 0) gap = std::min(gap, q.nodes[i] - q.nodes[i - 1]);
+  }
+  // Weights are as well determined as the nodes are resolved: a pair of nodes a relative gap g
+  // apart carries rounding errors ~ε/g (close pairs are legitimate: invert() does not merge them).
+  const T condition = q.size == 1  ? T(1)
+                      : gap > T(0) ? std::max(T(1), scale / gap)
+                                   : std::numeric_limits<T>::infinity();
+  const T tolerance = rounding_tolerance<T>(q.size) * condition + closed_form_cancellation(q);
+  // (plus a unit in the last place of the subnormals, which unscaled weights may be)
+  const T subnormal_slack = T(q.size) * std::numeric_limits<T>::denorm_min();
+  FUZZ_CHECK(close(sum, m[0], T(1), tolerance * m[0] + subnormal_slack) || !is_finite(tolerance),
+             "%s: sum of weights %.17g != m_0 %.17g; moments %s", entry, double(sum), double(m[0]), text(m).c_str());
+  // (plus m_0 times the smallest normal number: a node below it, e.g. a mean m_1/m_0 that
+  // underflows, is rounded to 0 or a subnormal)
+  const T first_slack = m[0] * (tolerance * scale + std::numeric_limits<T>::min()) + subnormal_slack * scale;
+  FUZZ_CHECK(close(first, m[1], T(1), first_slack) || !is_finite(tolerance),
+             "%s: sum w x = %.17g != m_1 %.17g; moments %s", entry, double(first), double(m[1]), text(m).c_str());
+  if (support == Support::positive_half_line)  // a rounding error of a node near 0, no more
+    FUZZ_CHECK(q.nodes[0] >= -rounding_tolerance<T>(q.size) * scale, "%s: node %.17g < 0 on [0, inf); moments %s",
+               entry, double(q.nodes[0]), text(m).c_str());
+}
+
+template <class T, int N>
+void check_inversion(const char* entry, const InversionResult<T, N>& r, std::span<const T> m,
+                     const InversionOptions& options) {
+  const Support support = options.support;
+  const int n = int(m.size() / 2);
+  FUZZ_CHECK(valid(r.status), "%s: status %d is not an InversionStatus", entry, int(r.status));
+  if (r.status == InversionStatus::eigen_failure) {
+    static bool printed = false;  // documented as never observed: worth knowing, not a violation
+    fluidbed::fuzz::note_once("invert: eigen_failure observed", printed);
+  }
+  if (!has_nodes(r.status)) {
+    FUZZ_CHECK(r.quadrature.size == 0, "%s: status %s with %d nodes; moments %s", entry, name(r.status),
+               r.quadrature.size, text(m).c_str());
+    return;
+  }
+  check_rule(entry, r.quadrature, m, support);
+  FUZZ_CHECK(r.status == InversionStatus::ok ? r.quadrature.size == n : r.quadrature.size < n,
+             "%s: status %s with %d of %d nodes; moments %s", entry, name(r.status), r.quadrature.size, n,
+             text(m).c_str());
+  FUZZ_CHECK(r.realizable_nodes == r.quadrature.size, "%s: realizable_nodes %d != %d nodes; moments %s", entry,
+             r.realizable_nodes, r.quadrature.size, text(m).c_str());
+  FUZZ_CHECK((is_finite(r.boundary_distance) && r.boundary_distance >= T(0)) ||
+                 nan_boundary_distance_of_dirac_at_zero(support, r.quadrature.size, r.boundary_distance),
+             "%s: boundary_distance %.17g with status %s; moments %s", entry, double(r.boundary_distance),
+             name(r.status), text(m).c_str());
+  if (r.status == InversionStatus::ok)
+    FUZZ_CHECK(r.first_failing_index == 0 && r.failing_value == T(0),
+               "%s: status ok with failing index %d, value %.17g; moments %s", entry, r.first_failing_index,
+               double(r.failing_value), text(m).c_str());
+}
+
+// Two inversions of the same set by different eigen-solvers: same status, nodes equal to rounding
+// (the recurrence is shared; only the eigen step differs).
+template <class T, int N, int M>
+void check_same_rule(const char* entry, const InversionResult<T, N>& a, const InversionResult<T, M>& b,
+                     std::span<const T> m) {
+  if (a.status == InversionStatus::eigen_failure || b.status == InversionStatus::eigen_failure) return;
+  if (three_node_out_of_range(a.quadrature, m) || three_node_out_of_range(b.quadrature, m) ||
+      infinite_rule(a.quadrature) || infinite_rule(b.quadrature))
+    return;
+  FUZZ_CHECK(a.status == b.status && a.quadrature.size == b.quadrature.size,
+             "%s: status %s (%d nodes) against %s (%d nodes); moments %s", entry, name(a.status), a.quadrature.size,
+             name(b.status), b.quadrature.size, text(m).c_str());
+  T scale(0);
+  for (int i = 0; i < a.quadrature.size; ++i) scale = std::max(scale, std::abs(a.quadrature.nodes[i]));
+  for (int i = 0; i < a.quadrature.size; ++i)
+    FUZZ_CHECK(close(a.quadrature.nodes[i], b.quadrature.nodes[i], T(1e4) * rounding_tolerance<T>(N), scale),
+               "%s: node %d is %.17g against %.17g; moments %s", entry, i, double(a.quadrature.nodes[i]),
+               double(b.quadrature.nodes[i]), text(m).c_str());
+}
+
+// ------------------------------------------------------------------------------------- decoding
+
+enum class Source { garbage, garbage_atoms, atoms, lognormal, gaussian, gamma, sieve, count };
+
+template <class T>
+struct Problem {
+  std::array<T, 2 * kCapacity> moments{};
+  int n = 1;  // nodes: 2n moments
+  Support support = Support::positive_half_line;
+  InversionOptions options{};
+  bool odd = false;     // the odd-size entry points get 2n − 1 moments
+  bool smooth = false;  // a continuous distribution (no atoms), uncorrupted: well inside moment space
+};
+
+template <class T>
+void atoms(Input& in, int n, Support support, bool garbage, std::span<T> m) {
+  const int count = 1 + in.integer(0, n);  // fewer atoms than nodes, as many, or one more
+  const double scale = in.log_uniform(1e-3, 1e3);
+  T x[kCapacity + 1], w[kCapacity + 1];
+  for (int i = 0; i < count; ++i) {
+    if (garbage) {
+      x[i] = in.garbage<T>();
+      w[i] = std::abs(in.garbage<T>());
+      continue;
+    }
+    const int kind = in.byte() % 4;
+    if (i > 0 && kind == 0)
+      x[i] = x[i - 1];  // coincident: a degenerate set
+    else if (i > 0 && kind == 1)
+      x[i] = T(x[i - 1] * (1 + in.log_uniform(1e-10, 1e-2)));  // a close pair
+    else if (support == Support::positive_half_line)
+      x[i] = T(in.log_uniform(1e-7, 1e-1));
+    else
+      x[i] = T(scale * in.uniform(-1, 1));
+    w[i] = T(in.log_uniform(1e-12, 1));
+  }
+  moments_from_quadrature<T>(std::span<const T>(x, count), std::span<const T>(w, count), m);
+}
+
+template <class T>
+void sieve(Input& in, std::span<T> m) {
+  const int bins = in.integer(1, 6);
+  T edges[7], fractions[6];
+  edges[0] = in.byte() % 8 == 0 ? T(0) : T(in.log_uniform(1e-6, 1e-3));  // a pan, or the lowest sieve
+  for (int i = 0; i < bins; ++i) {
+    edges[i + 1] = T(edges[i] + in.log_uniform(1e-8, 1e-3));
+    fractions[i] = in.byte() % 8 == 0 ? T(0) : T(in.uniform(1e-3, 1));
+  }
+  fractions[in.integer(0, bins - 1)] = T(1);  // a positive sum
+  const SieveAnalysis<T> psd{std::span<const T>(edges, bins + 1), std::span<const T>(fractions, bins),
+                             in.boolean() ? SizeBasis::number : SizeBasis::volume};
+  const T voidage = T(in.uniform(0.3, 1));
+  sieve_moments(psd, voidage, m);
+  // The checked entry point accepts what the hot path's preconditions allow, and agrees with it.
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const T checked = sieve_moment_checked(psd, voidage, int(k));
+    FUZZ_CHECK(same_bits(checked, m[k]), "sieve_moment_checked(k = %zu) = %.17g, sieve_moments %.17g", k,
+               double(checked), double(m[k]));
+  }
+}
+
+// A sieve analysis with garbage in it: the checked entry point throws std::domain_error or gives
+// a finite moment.
+template <class T>
+void garbage_sieve(Input& in) {
+  const int bins = in.integer(1, 3);
+  T edges[4], fractions[3];
+  for (int i = 0; i <= bins; ++i) edges[i] = in.garbage<T>();
+  for (int i = 0; i < bins; ++i) fractions[i] = in.garbage<T>();
+  const std::size_t edge_count = std::size_t(bins + 1 - in.integer(0, 1));  // sometimes one edge short
+  const SieveAnalysis<T> psd{std::span<const T>(edges, edge_count), std::span<const T>(fractions, bins),
+                             in.boolean() ? SizeBasis::number : SizeBasis::volume};
+  const T voidage = in.garbage<T>();
+  const int k = in.integer(-3, 12);
+  try {
+    const T value = sieve_moment_checked(psd, voidage, k);
+    FUZZ_CHECK(is_finite(value) || unrepresentable_sieve_moment_accepted(psd),
+               "sieve_moment_checked(k = %d) accepted edges %s, fractions %s, voidage %.17g and "
+               "returned %.17g",
+               k, text(std::span<const T>(edges, edge_count)).c_str(),
+               text(std::span<const T>(fractions, bins)).c_str(), double(voidage), double(value));
+  } catch (const std::domain_error&) {
+  }
+}
+
+template <class T>
+Problem<T> decode(Input& in) {
+  Problem<T> p;
+  const std::uint8_t flags = in.byte();
+  p.n = 1 + flags % kCapacity;
+  p.support = flags & 8 ? Support::real_line : Support::positive_half_line;
+  p.options = {.algorithm = flags & 16 ? RecurrenceAlgorithm::product_difference : RecurrenceAlgorithm::wheeler,
+               .solver = flags & 32 ? EigenSolver::golub_welsch : EigenSolver::automatic,
+               .support = p.support};
+  p.odd = flags & 64;
+  if (product_difference_on_real_line(p.options)) p.options.algorithm = RecurrenceAlgorithm::wheeler;
+  const std::span<T> m(p.moments.data(), std::size_t(2 * p.n));
+  const auto source = Source(in.byte() % int(Source::count));
+  switch (source) {
+    case Source::garbage:
+      for (T& x : m) x = in.garbage<T>();
+      return p;  // nothing to corrupt
+    case Source::garbage_atoms:
+    case Source::atoms:
+      atoms(in, p.n, p.support, source == Source::garbage_atoms, m);
+      break;
+    case Source::lognormal: {
+      const LognormalParameters<T> q{T(std::log(in.log_uniform(1e-7, 1e-1))), T(in.log_uniform(1e-8, 2))};
+      lognormal_moments(T(in.uniform(1e-6, 0.7)), q, m);
+      break;
+    }
+    case Source::gaussian: {  // m_k = μ m_{k−1} + (k − 1) σ² m_{k−2}
+      const double scale = in.log_uniform(1e-6, 1e3);
+      const double mean = p.support == Support::real_line ? scale * in.uniform(-1, 1) : scale;
+      const double sigma = scale * in.log_uniform(1e-4, 2);
+      m[0] = T(in.uniform(1e-6, 1));
+      for (int k = 1; k < 2 * p.n; ++k) m[k] = T(mean * m[k - 1] + (k > 1 ? (k - 1) * sigma * sigma * m[k - 2] : 0));
+      break;
+    }
+    case Source::gamma: {  // m_k = m_{k−1} θ (a + k − 1)
+      const double shape = in.log_uniform(1e-2, 1e2), scale = in.log_uniform(1e-8, 1e-2);
+      m[0] = T(in.uniform(1e-6, 1));
+      for (int k = 1; k < 2 * p.n; ++k) m[k] = T(m[k - 1] * scale * (shape + k - 1));
+      break;
+    }
+    case Source::sieve:
+      sieve(in, m);
+      garbage_sieve<T>(in);
+      break;
+    case Source::count:
+      break;
+  }
+  // Corruption of one moment, as advection produces it (or worse).
+  const int k = in.integer(0, 2 * p.n - 1);
+  const int corruption = in.byte() % 8;
+  p.smooth = corruption < 4 && source != Source::atoms && source != Source::garbage_atoms;
+  switch (corruption) {
+    case 4:
+      m[k] = T(m[k] * (1 + (in.boolean() ? 1 : -1) * in.log_uniform(1e-16, 1)));
+      break;
+    case 5:
+      m[k] = in.garbage<T>();
+      break;
+    case 6:
+      m[k] = -m[k];
+      break;
+    case 7:
+      m[k] = T(0);
+      break;
+    default:
+      break;
+  }
+  return p;
+}
+
+// ---------------------------------------------------------------------------------- entry points
+
+// invert at capacity N for the node count of the problem, with every solver, and invert_eigen.
+template <class T, int N>
+InversionResult<T, N> inversions(const Problem<T>& p, std::span<const T> m) {
+  const InversionResult<T, N> r = invert<T, N>(m, p.options);
+  check_inversion("invert", r, m, p.options);
+  InversionOptions ql = p.options;
+  ql.solver = EigenSolver::golub_welsch;
+  const InversionResult<T, N> by_ql = invert<T, N>(m, ql);
+  check_inversion("invert(golub_welsch)", by_ql, m, ql);
+  check_same_rule("invert automatic vs golub_welsch", r, by_ql, m);
+  const InversionResult<T, N> by_eigen = invert_eigen<T, N>(m, p.options);
+  check_inversion("invert_eigen", by_eigen, m, p.options);
+  check_same_rule("invert vs invert_eigen", r, by_eigen, m);
+  return r;
+}
+
+// The realizability report agrees with the inversion (Wheeler's) on the same even set.
+template <class T>
+void realizability_checks(const Problem<T>& p, std::span<const T> m, const InversionResult<T, kCapacity>& wheeler) {
+  const RealizabilityReport<T, kCapacity> report = realizability<T, kCapacity>(m, p.support);
+  FUZZ_CHECK(valid(report.status) && report.status != InversionStatus::eigen_failure,
+             "realizability: status %d; moments %s", int(report.status), text(m).c_str());
+  FUZZ_CHECK(report.realizable_moments >= 0 && report.realizable_moments <= int(m.size()) &&
+                 report.realizable_nodes == report.realizable_moments / 2,
+             "realizability: %d moments, %d nodes of %zu moments; moments %s", report.realizable_moments,
+             report.realizable_nodes, m.size(), text(m).c_str());
+  FUZZ_CHECK((report.status == InversionStatus::ok) == (report.realizable_moments == int(m.size())),
+             "realizability: status %s with %d of %zu moments realizable; moments %s", name(report.status),
+             report.realizable_moments, m.size(), text(m).c_str());
+  if (scaled_moments_overflow(m)) return;
+  if (m.size() % 2 == 0 && wheeler.status != InversionStatus::eigen_failure)
+    FUZZ_CHECK(report.status == wheeler.status &&
+                   (!has_nodes(report.status) || report.realizable_nodes == wheeler.realizable_nodes),
+               "realizability: %s with %d nodes, invert: %s with %d; moments %s", name(report.status),
+               report.realizable_nodes, name(wheeler.status), wheeler.realizable_nodes, text(m).c_str());
+  if (has_nodes(report.status))
+    for (int k = 0; k < report.realizable_nodes; ++k)
+      FUZZ_CHECK(FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES  // ±∞ is issue 6, NaN never
+                     ? !std::isnan(report.recurrence.alpha[k]) && !std::isnan(report.recurrence.beta[k])
+                     : is_finite(report.recurrence.alpha[k]) && is_finite(report.recurrence.beta[k]),
+                 "realizability: recurrence level %d not finite with status %s; moments %s", k, name(report.status),
+                 text(m).c_str());
+}
+
+// The degeneracy rules of adaptive.hpp, re-derived: every weight >= r_min m_0, every gap >= e_abs x_rms.
+template <class T>
+bool degenerate(const Quadrature<T, kCapacity>& q, const AdaptiveOptions<T>& o) {
+  if (q.size <= 1) return false;
+  T m0(0), m2(0);
+  for (int i = 0; i < q.size; ++i) {
+    m0 += q.weights[i];
+    m2 += q.weights[i] * q.nodes[i] * q.nodes[i];
+  }
+  const T rms = std::sqrt(m2 / m0);
+  for (int i = 0; i < q.size; ++i)
+    if (!(q.weights[i] >= o.min_weight_fraction * m0)) return true;
+  for (int i = 1; i < q.size; ++i)
+    if (!(q.nodes[i] - q.nodes[i - 1] >= o.min_node_separation * rms)) return true;
+  return false;
+}
+
+template <class T>
+void check_radau_rule(const char* entry, const Quadrature<T, kCapacity>& q, const T& fixed_node, std::span<const T> m,
+                      Support support) {
+  bool found = false;
+  for (int i = 0; i < q.size; ++i) {
+    // Exactly the fixed node (scaled by a power of two and back), but for the bits a node near the
+    // subnormal range loses in that scaling.
+    const T tiny = std::ldexp(std::numeric_limits<T>::min(), std::numeric_limits<T>::digits);
+    found = found || same_bits(q.nodes[i], fixed_node) ||
+            (std::abs(fixed_node) < tiny && std::abs(q.nodes[i] - fixed_node) < tiny);
+    FUZZ_CHECK(q.weights[i] > T(0) && (support == Support::real_line || q.nodes[i] >= T(0)),
+               "%s: Gauss–Radau node %.17g weight %.17g (weights > 0, nodes >= 0 on [0, inf)); moments %s", entry,
+               double(q.nodes[i]), double(q.weights[i]), text(m).c_str());
+  }
+  FUZZ_CHECK(found, "%s: Gauss–Radau rule without its fixed node %.17g; moments %s", entry, double(fixed_node),
+             text(m).c_str());
+}
+
+template <class T>
+AdaptiveOptions<T> adaptive_options(Input& in, const Problem<T>& p) {
+  AdaptiveOptions<T> o;
+  o.inversion = p.options;
+  o.radau = in.boolean();
+  switch (in.byte() % 4) {  // the fixed node: 0, the lower end of the set, or anything
+    case 0:
+      o.fixed_node = T(0);
+      break;
+    case 1:
+      o.fixed_node = T(p.moments[1] / p.moments[0] * in.uniform(0, 1));
+      break;
+    case 2:
+      o.fixed_node = in.garbage<T>();
+      break;
+    default:
+      o.fixed_node = T(p.moments[1] / p.moments[0] * in.uniform(-2, 2));
+      break;
+  }
+  if (in.byte() % 4 == 0) {  // thresholds other than the defaults
+    o.min_weight_fraction = in.boolean() ? T(0) : T(in.log_uniform(1e-14, 0.1));
+    o.min_node_separation = in.boolean() ? T(0) : T(in.log_uniform(1e-14, 0.1));
+    o.boundary_tolerance = in.boolean() ? T(0) : T(in.log_uniform(1e-20, 0.1));
+  }
+  return o;
+}
+
+template <class T>
+void adaptive_checks(Input& in, const Problem<T>& p, std::span<const T> m) {
+  const AdaptiveOptions<T> o = adaptive_options(in, p);
+  const AdaptiveInversionResult<T, kCapacity> r = invert_adaptive<T, kCapacity>(m, o);
+  const char* entry = "invert_adaptive";
+  FUZZ_CHECK(valid(r.status), "%s: status %d", entry, int(r.status));
+  if (!has_nodes(r.status)) {
+    FUZZ_CHECK(r.quadrature.size == 0, "%s: status %s with %d nodes; moments %s", entry, name(r.status),
+               r.quadrature.size, text(m).c_str());
+  } else {
+    check_rule(entry, r.quadrature, m, p.support);
+    const int full = o.radau ? int(m.size()) : 2 * int(m.size() / 2);
+    FUZZ_CHECK((r.status == InversionStatus::ok) == (r.moments_used == full) &&
+                   (r.status == InversionStatus::ok) == (r.reduced_by == ReductionRule::none),
+               "%s: status %s, %d of %d moments used, reduced_by %d; moments %s", entry, name(r.status), r.moments_used,
+               full, int(r.reduced_by), text(m).c_str());
+    FUZZ_CHECK(r.radau ? r.moments_used % 2 == 1 && r.quadrature.size == r.moments_used / 2 + 1
+                       : r.moments_used % 2 == 0 && r.quadrature.size == r.moments_used / 2,
+               "%s: %d nodes (radau %d) for %d moments used; moments %s", entry, r.quadrature.size, int(r.radau),
+               r.moments_used, text(m).c_str());
+    FUZZ_CHECK(r.quadrature.size <= r.realizable_nodes, "%s: %d nodes but %d realizable; moments %s", entry,
+               r.quadrature.size, r.realizable_nodes, text(m).c_str());
+    FUZZ_CHECK(!degenerate(r.quadrature, o), "%s: the returned rule is degenerate by its own thresholds; moments %s",
+               entry, text(m).c_str());
+    if (r.radau) check_radau_rule(entry, r.quadrature, o.fixed_node, m, p.support);
+  }
+  // The stand-alone Gauss–Radau rule of an odd set (3 <= size <= 2N − 1).
+  if (m.size() % 2 == 1 && m.size() >= 3) {
+    const InversionResult<T, kCapacity> radau = gauss_radau<T, kCapacity>(m, o.fixed_node, p.options);
+    FUZZ_CHECK(valid(radau.status) && radau.status != InversionStatus::reduced, "gauss_radau: status %s; moments %s",
+               name(radau.status), text(m).c_str());
+    if (radau.status == InversionStatus::ok) {
+      FUZZ_CHECK(radau.quadrature.size == int(m.size() / 2) + 1, "gauss_radau: %d nodes from %zu moments",
+                 radau.quadrature.size, m.size());
+      check_rule("gauss_radau", radau.quadrature, m, p.support);
+      check_radau_rule("gauss_radau", radau.quadrature, o.fixed_node, m, p.support);
+    } else {
+      FUZZ_CHECK(radau.quadrature.size == 0, "gauss_radau: status %s with %d nodes; moments %s", name(radau.status),
+                 radau.quadrature.size, text(m).c_str());
+    }
+  }
+}
+
+const char* name(CorrectionStatus s) {
+  switch (s) {
+    case CorrectionStatus::unchanged:
+      return "unchanged";
+    case CorrectionStatus::mcgraw:
+      return "mcgraw";
+    case CorrectionStatus::lognormal:
+      return "lognormal";
+    case CorrectionStatus::monodisperse:
+      return "monodisperse";
+    case CorrectionStatus::zero_mass:
+      return "zero_mass";
+    case CorrectionStatus::failed:
+      return "failed";
+  }
+  return "<not a CorrectionStatus>";
+}
+
+template <class T>
+void check_correction(const char* entry, const CorrectionResult<T, kCapacity>& c, std::span<const T> m,
+                      const CorrectionOptions<T>& o) {
+  const std::span<const T> out(c.moments.data(), m.size());
+  FUZZ_CHECK(c.size == int(m.size()) && c.iterations >= 0 && c.iterations <= o.max_iterations,
+             "%s: size %d, %d iterations; moments %s", entry, c.size, c.iterations, text(m).c_str());
+  const bool as_given = c.status == CorrectionStatus::unchanged || c.status == CorrectionStatus::zero_mass ||
+                        c.status == CorrectionStatus::failed;
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    FUZZ_CHECK(same_bits(out[k], m[k]) || (!as_given && c.changed[k] && k > 0),
+               "%s: status %s, moment %zu changed from %.17g to %.17g (changed flag %d; M_0 is never changed); "
+               "moments %s",
+               entry, name(c.status), k, double(m[k]), double(out[k]), int(c.changed[k]), text(m).c_str());
+    FUZZ_CHECK(as_given || (is_finite(out[k]) && out[k] > T(0)) || correction_out_of_range(c.status, out[k], m),
+               "%s: status %s but corrected moment %zu = %.17g; moments %s -> %s", entry, name(c.status), k,
+               double(out[k]), text(m).c_str(), text(out).c_str());
+  }
+}
+
+template <class T>
+void correction_checks(Input& in, const Problem<T>& p, std::span<const T> m) {
+  CorrectionOptions<T> o;
+  o.protected_moments = in.integer(1, 3);
+  o.max_iterations = in.integer(0, 30);
+  if (in.boolean()) o.degenerate_tolerance = T(in.log_uniform(1e-16, 1e-2));
+  const CorrectionResult<T, kCapacity> c = correct_moments<T, kCapacity>(m, o);
+  check_correction("correct_moments", c, m, o);
+  bool overflowed = false;
+  for (std::size_t k = 0; k < m.size(); ++k)
+    overflowed = overflowed || correction_out_of_range(c.status, c.moments[k], m);
+  if (c.status != CorrectionStatus::failed && c.status != CorrectionStatus::zero_mass && m.size() >= 2 && !overflowed &&
+      !mean_out_of_range(m)) {
+    // A corrected set (or one left unchanged as realizable) has at least one node.
+    const std::span<const T> out(c.moments.data(), m.size());
+    AdaptiveOptions<T> a;
+    a.inversion.support = Support::positive_half_line;
+    const AdaptiveInversionResult<T, kCapacity> r = invert_adaptive<T, kCapacity>(out, a);
+    FUZZ_CHECK(has_nodes(r.status), "correct_moments: status %s, yet the corrected set inverts to %s; moments %s -> %s",
+               name(c.status), name(r.status), text(m).c_str(), text(out).c_str());
+  }
+  const CorrectionResult<T, kCapacity> mc = mcgraw_correct<T, kCapacity>(m, o);
+  check_correction("mcgraw_correct", mc, m, o);
+  FUZZ_CHECK(mc.status != CorrectionStatus::lognormal && mc.status != CorrectionStatus::monodisperse,
+             "mcgraw_correct: status %s", name(mc.status));
+  (void)p;
+}
+
+// A change of units by powers of two (lengths by 2^a, weights by 2^b) changes no bit of an
+// inversion (recurrence.hpp, eigen_backend.hpp), as long as every number stays a normal one.
+template <class T>
+void unit_invariance_checks(Input& in, const Problem<T>& p, std::span<const T> m,
+                            const InversionResult<T, kCapacity>& r) {
+  const int a = in.integer(-40, 40), b = in.integer(-40, 40);
+  // Only a set with a length scale (recurrence.hpp: m_1/m_0 if positive, else √(m_2/m_0)) has one
+  // to change; otherwise scaling_of uses 1, in any unit.
+  const auto scale = [&](T ratio) { return ratio > T(0) && std::isnormal(ratio); };
+  if (!(m[0] > T(0) && (scale(m[1] / m[0]) || (m.size() > 2 && scale(m[2] / m[0]))))) return;
+  std::array<T, 2 * kCapacity> scaled{};
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    scaled[k] = std::ldexp(m[k], b + int(k) * a);
+    if (!(std::isnormal(m[k]) && std::isnormal(scaled[k]))) return;  // not an exact change of units
+  }
+  const std::span<const T> s(scaled.data(), m.size());
+  // … and the same one in the new unit (a mean that overflows there is no change of units).
+  if (scale(s[1] / s[0]) != scale(m[1] / m[0]) || !(scale(s[1] / s[0]) || (s.size() > 2 && scale(s[2] / s[0])))) return;
+  const InversionResult<T, kCapacity> q = invert<T, kCapacity>(s, p.options);
+  for (int i = 0; i < r.quadrature.size; ++i)
+    for (T x : {r.quadrature.nodes[i], r.quadrature.weights[i]})
+      if (x != T(0) && !std::isnormal(x)) return;  // a subnormal result is not exactly scalable
+  bool same = q.status == r.status && q.quadrature.size == r.quadrature.size &&
+              q.first_failing_index == r.first_failing_index && same_bits(q.boundary_distance, r.boundary_distance);
+  for (int i = 0; same && i < r.quadrature.size; ++i)
+    same = same_bits(q.quadrature.nodes[i], std::ldexp(r.quadrature.nodes[i], a)) &&
+           same_bits(q.quadrature.weights[i], std::ldexp(r.quadrature.weights[i], b));
+  FUZZ_CHECK(same,
+             "invert: a change of units by 2^%d (length), 2^%d (weight) changed the result: %s with %d nodes "
+             "against %s with %d; moments %s",
+             a, b, name(q.status), q.quadrature.size, name(r.status), r.quadrature.size, text(m).c_str());
+}
+
+// Whether the exactly scaled moments reach beyond the square root of the range (a moment
+// corrupted to 1e286): Wheeler's products of two of them may then overflow or go subnormal, and
+// the lanes, which scale by another power of two (see below), round differently from invert()
+// or fail where it passes. "Bit for bit" (batched.hpp) holds within the range, and is checked there.
+template <class T>
+bool beyond_half_range(std::span<const T> m) {
+  if (detail::input_status(m) != InversionStatus::ok) return false;
+  std::array<T, 2 * kCapacity> scaled{};
+  scale_moments(m, scaling_of(m), std::span<T>(scaled.data(), m.size()));
+  const T high = std::sqrt(std::numeric_limits<T>::max()), low = std::sqrt(std::numeric_limits<T>::min());
+  for (std::size_t k = 0; k < m.size(); ++k)
+    if (!(std::abs(scaled[k]) <= high) || (scaled[k] != T(0) && std::abs(scaled[k]) < low)) return true;
+  return false;
+}
+
+// Equal bits, or both below the normal range: the lanes scale by 2^floor(log2 ·) where invert()
+// rounds to nearest, which changes the rounding of a subnormal (a node 5e-46 in float: 1.4e-45
+// against 0).
+template <class T>
+bool same_or_subnormal(const T& a, const T& b) {
+  return same_bits(a, b) ||
+         (std::abs(a) < std::numeric_limits<T>::min() && std::abs(b) < std::numeric_limits<T>::min());
+}
+
+// invert_batched against the per-cell invert: same statuses and sizes; the same nodes and weights
+// bit for bit (no FMA contraction at these flags), to rounding for N = 3 (another eigen-solver).
+template <class T, int N>
+void batched_checks(Input& in, std::span<const T> base, Support support) {
+  const int cells = in.integer(1, 40);  // partial and several lanes of 16 (double) or 32 (float)
+  std::vector<std::array<T, 2 * N>> cell(std::size_t(cells), std::array<T, 2 * N>{});
+  for (auto& c : cell) {
+    std::copy(base.begin(), base.end(), c.begin());
+    const int k = in.integer(0, 2 * N - 1);
+    switch (in.byte() % 4) {
+      case 1: {  // another unit
+        const int a = in.integer(-8, 8);
+        for (int j = 0; j < 2 * N; ++j) c[j] = std::ldexp(c[j], a * j);
+        break;
+      }
+      case 2:
+        c[k] = in.garbage<T>();
+        break;
+      case 3:
+        c[k] = T(c[k] * (1 + in.uniform(-1e-6, 1e-6)));
+        break;
+      default:
+        break;
+    }
+  }
+  std::vector<T> fields(std::size_t(2 * N * cells)), x(std::size_t(N * cells), T(-7)), w(x);
+  std::vector<int> sizes(std::size_t(cells), -1);
+  std::vector<InversionStatus> status(std::size_t(cells), InversionStatus(-1));
+  MomentBatch<T, N> batch;
+  batch.cells = std::size_t(cells);
+  QuadratureBatch<T, N> out;
+  for (int k = 0; k < 2 * N; ++k) {
+    batch.moments[k] = fields.data() + k * cells;
+    for (int c = 0; c < cells; ++c) fields[std::size_t(k * cells + c)] = cell[std::size_t(c)][k];
+  }
+  for (int i = 0; i < N; ++i) {
+    out.nodes[i] = x.data() + i * cells;
+    out.weights[i] = w.data() + i * cells;
+  }
+  out.sizes = sizes.data();
+  out.status = status.data();
+  invert_batched<T, N>(batch, out, support);
+  for (int c = 0; c < cells; ++c) {
+    const std::span<const T> m(cell[std::size_t(c)].data(), 2 * N);
+    const InversionResult<T, N> r = invert<T, N>(m, {.support = support});
+    if (beyond_half_range(m) || scaled_moments_overflow(m) || three_node_out_of_range(r.quadrature, m) ||
+        infinite_rule(r.quadrature))
+      continue;
+    FUZZ_CHECK(status[c] == r.status && sizes[c] == r.quadrature.size,
+               "invert_batched<%d>: cell %d of %d has status %s with %d nodes, invert: %s with %d; moments %s", N, c,
+               cells, name(status[c]), sizes[c], name(r.status), r.quadrature.size, text(m).c_str());
+    T scale(0), mass(0);
+    for (int i = 0; i < r.quadrature.size; ++i) {
+      scale = std::max(scale, std::abs(r.quadrature.nodes[i]));
+      mass += r.quadrature.weights[i];
+    }
+    for (int i = 0; i < N; ++i) {
+      const T xb = x[std::size_t(i * cells + c)], wb = w[std::size_t(i * cells + c)];
+      if (i >= r.quadrature.size) {
+        FUZZ_CHECK(wb == T(0), "invert_batched<%d>: cell %d weight %d = %.17g beyond its %d nodes", N, c, i, double(wb),
+                   r.quadrature.size);
+        continue;
+      }
+      const bool agree =
+          N == 3 ? close(xb, r.quadrature.nodes[i], T(1e3) * rounding_tolerance<T>(N), scale) &&
+                       close(wb, r.quadrature.weights[i], T(1e3) * rounding_tolerance<T>(N), mass)
+                 : same_or_subnormal(xb, r.quadrature.nodes[i]) && same_or_subnormal(wb, r.quadrature.weights[i]);
+      FUZZ_CHECK(agree, "invert_batched<%d>: cell %d node %d = %.17g weight %.17g, invert: %.17g, %.17g; moments %s", N,
+                 c, i, double(xb), double(wb), double(r.quadrature.nodes[i]), double(r.quadrature.weights[i]),
+                 text(m).c_str());
+    }
+  }
+}
+
+// The compile-time capacity N = n: the fixed-size entry points, where every loop bound is tight.
+template <class T, int N>
+void exact_capacity(Input& in, const Problem<T>& p, std::span<const T> m) {
+  std::array<T, 2 * N> fixed;
+  std::copy(m.begin(), m.end(), fixed.begin());
+  const InversionResult<T, N> r = invert<N>(fixed, p.options);
+  check_inversion("invert<N>(array)", r, m, p.options);
+  const InversionResult<T, N> e = invert_eigen<N>(fixed, p.options);
+  check_inversion("invert_eigen<N>(array)", e, m, p.options);
+  AdaptiveOptions<T> o;
+  o.inversion = p.options;
+  const AdaptiveInversionResult<T, N> a = invert_adaptive<N>(fixed, o);
+  FUZZ_CHECK(valid(a.status) && has_nodes(a.status) == (a.quadrature.size > 0),
+             "invert_adaptive<N>(array): status %s with %d nodes; moments %s", name(a.status), a.quadrature.size,
+             text(m).c_str());
+  if (has_nodes(a.status)) check_rule("invert_adaptive<N>(array)", a.quadrature, m, p.support);
+  if (m[0] > T(0) && is_finite(m[0])) {  // recurrence(): m_0 > 0 finite is its only precondition
+    const Recurrence<T, N> w = recurrence<T, N>(m, RecurrenceAlgorithm::wheeler);
+    const Recurrence<T, N> pd = recurrence<T, N>(m, RecurrenceAlgorithm::product_difference);
+    FUZZ_CHECK(w.size >= 0 && w.size <= N && pd.size >= 0 && pd.size <= N, "recurrence: sizes %d, %d", w.size, pd.size);
+    (void)stieltjes_coefficients(w);
+  }
+  batched_checks<T, N>(in, m, p.support);
+}
+
+template <class T>
+void run(Input& in) {
+  const Problem<T> p = decode<T>(in);
+  const std::span<const T> m(p.moments.data(), std::size_t(2 * p.n));
+  const InversionResult<T, kCapacity> r = inversions<T, kCapacity>(p, m);
+  InversionOptions wheeler = p.options;
+  wheeler.algorithm = RecurrenceAlgorithm::wheeler;
+  const InversionResult<T, kCapacity> by_wheeler =
+      p.options.algorithm == RecurrenceAlgorithm::wheeler ? r : invert<T, kCapacity>(m, wheeler);
+  realizability_checks(p, m, by_wheeler);
+  // Product-difference builds the recurrence "exactly as far as Wheeler's would go": on the moments
+  // of a continuous distribution (well inside moment space; n <= 4, where its cancellations cost
+  // fewer digits than the set has) it is complete too. Near the boundary both compute rounding
+  // noise, and may disagree on its sign.
+  if (p.options.algorithm == RecurrenceAlgorithm::product_difference && std::is_same_v<T, double> && p.smooth &&
+      p.n <= 4 && by_wheeler.status == InversionStatus::ok && by_wheeler.boundary_distance > T(1e-3))
+    FUZZ_CHECK(r.status == InversionStatus::ok,
+               "product-difference: status %s where Wheeler's is ok (boundary "
+               "distance %.3g); moments %s",
+               name(r.status), double(by_wheeler.boundary_distance), text(m).c_str());
+  // The entry points that take any size get 2n − 1 moments when the problem says odd.
+  const std::span<const T> any = p.odd && p.n > 1 ? m.first(m.size() - 1) : m;
+  if (any.size() != m.size()) realizability_checks(p, any, by_wheeler);
+  adaptive_checks(in, p, any);
+  if (p.support == Support::positive_half_line) correction_checks(in, p, any);
+  unit_invariance_checks(in, p, m, r);
+  switch (p.n) {
+    case 1:
+      exact_capacity<T, 1>(in, p, m);
+      break;
+    case 2:
+      exact_capacity<T, 2>(in, p, m);
+      break;
+    case 3:
+      exact_capacity<T, 3>(in, p, m);
+      break;
+    case 4:
+      exact_capacity<T, 4>(in, p, m);
+      break;
+    case 5:
+      exact_capacity<T, 5>(in, p, m);
+      break;
+    case 6:
+      exact_capacity<T, 6>(in, p, m);
+      break;
+    case 7:
+      exact_capacity<T, 7>(in, p, m);
+      break;
+    default:
+      exact_capacity<T, 8>(in, p, m);
+      break;
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  Input in(data, size);
+  // The first byte picks the floating type: double mostly, float for the single-precision paths.
+  if (in.byte() % 4 == 3)
+    run<float>(in);
+  else
+    run<double>(in);
+  return 0;
+}
