@@ -229,3 +229,22 @@ TEST_CASE("the same code runs in long double and Boost.Multiprecision (50 digits
   const auto q = invert<5>(u);
   CHECK(std::abs(q.quadrature.nodes[0] - 0.046910077030668003601186560850303517L) < 1e-14L);
 }
+
+// Found by fuzz/moment_inversion_fuzzer: eight moments whose three-node prefix on the real
+// line spreads its nodes over 1e3 … 5e18; the closed-form three-node solver overflowed there
+// and returned NaN weights under status reduced. The QL takes over: a finite rule, or a status.
+TEST_CASE("a three-node rule whose nodes spread beyond the closed form's range is finite or has a failure status") {
+  const std::array<double, 8> m{0.26173474688316289,    -259.66282338420916,   257607.3045337277,
+                                -255568060.42219979,    253544962169.06024,    251537881914546.22,
+                                2.495466928116103e+17, -2.475712690178978e+20};
+  const auto r = invert<4>(m, {.support = Support::real_line});
+  REQUIRE(r.status == InversionStatus::reduced);
+  REQUIRE(r.quadrature.size == 3);
+  double total = 0;
+  for (int i = 0; i < 3; ++i) {
+    CHECK(std::isfinite(r.quadrature.nodes[i]));
+    CHECK(r.quadrature.weights[i] >= 0);
+    total += r.quadrature.weights[i];
+  }
+  CHECK(total == doctest::Approx(m[0]).epsilon(1e-12));
+}

@@ -54,6 +54,15 @@ FLUIDBED_HOST_DEVICE void unscale(Quadrature<T, N>& q, MomentScaling s) {
   }
 }
 
+// Whether every node and weight of q is finite.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE bool finite_rule(const Quadrature<T, N>& q) {
+  using std::isfinite;
+  for (int i = 0; i < q.size; ++i)
+    if (!isfinite(q.nodes[i]) || !isfinite(q.weights[i])) return false;
+  return true;
+}
+
 }  // namespace detail
 
 namespace detail {
@@ -90,7 +99,9 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
   assess(r, requested, options.support, s, out);
   out.realizable_nodes = r.size;
   if (r.size == 0) return out;  // not_realizable (e.g. a negative mean on [0, ∞))
-  if (!solve(static_cast<const Recurrence<T, N>&>(r), out.quadrature)) {
+  // A solver that cannot represent the rule (a spread of nodes beyond the floating-point
+  // range) says so by a status, never by a NaN under ok.
+  if (!solve(static_cast<const Recurrence<T, N>&>(r), out.quadrature) || !finite_rule(out.quadrature)) {
     out.quadrature.size = 0;
     out.status = InversionStatus::eigen_failure;
     return out;
@@ -114,8 +125,10 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const In
       }
       if constexpr (N >= 3)
         if (r.size == 3) {
+          // The closed form squares the spread of the nodes: beyond ~1e19 (double) relative to
+          // the scaled mean it overflows (found by fuzz/), where the QL below does not.
           q = gauss_three_nodes(r);
-          return true;
+          if (detail::finite_rule(q)) return true;
         }
     }
     return gauss_golub_welsch(r, q);

@@ -33,7 +33,9 @@ enum class InversionStatus {
   not_realizable,  // not even one node: m_0 < 0, or moments of an empty cell nonzero, or the mean
                    // outside the support
   invalid_input,   // a moment is NaN or infinite
-  eigen_failure,   // the QL iteration did not converge (never observed); no nodes
+  eigen_failure,   // the QL iteration did not converge, or the rule is not representable (nodes
+                   // spread beyond the floating-point range); never observed for size
+                   // distributions; no nodes
 };
 
 template <class T, int N>
