@@ -2,6 +2,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "fluidbed/drag/mazzei_lettieri.hpp"
 
@@ -56,7 +59,8 @@ TEST_CASE("the regularised form equals Table 3.1's β = ¾ C_D ρ w (1-ε)/d ε^
       const DragState<double> s{.voidage = eps, .slip = w, .fluid = water, .diameter = d};
       const double re = particle_reynolds(water, d, eps, w);
       const double cd = std::pow(0.63 + 4.8 / std::sqrt(re), 2);
-      const double table_3_1 = 0.75 * cd * water.density * w * (1 - eps) / d * std::pow(eps, -ML::equivalent_exponent(eps, re));
+      const double table_3_1 =
+          0.75 * cd * water.density * w * (1 - eps) / d * std::pow(eps, -ML::equivalent_exponent(eps, re));
       CHECK(ML{}(s).classical() == doctest::Approx(table_3_1).epsilon(1e-12));
     }
 }
@@ -66,14 +70,16 @@ TEST_CASE("limits: ψ_e → 2.80 for Re → 0 and Re → ∞ (eqs. 3.68, 3.71), 
     CHECK(ML::equivalent_exponent(eps, 1e-14) == doctest::Approx(2.8).epsilon(1e-5));
     CHECK(ML::equivalent_exponent(eps, 1e18) == doctest::Approx(2.8).epsilon(1e-5));
     const DragState<double> s{.voidage = eps, .slip = 0.0, .fluid = water, .diameter = 1e-4};
-    CHECK(ML{}(s).classical() == doctest::Approx(17.28 * 1e-3 * (1 - eps) / (1e-8 * std::pow(eps, 3.8))).epsilon(1e-14));
+    CHECK(ML{}(s).classical() ==
+          doctest::Approx(17.28 * 1e-3 * (1 - eps) / (1e-8 * std::pow(eps, 3.8))).epsilon(1e-14));
   }
   // ψ_e at ε = 1 is the limit of the neighbouring values (0/0 in eq. 3.64).
   for (double re : {1e-3, 1.0, 100.0, 1e5})
     CHECK(ML::equivalent_exponent(1.0, re) == doctest::Approx(ML::equivalent_exponent(1.0 - 1e-7, re)).epsilon(1e-6));
   // Thesis: the minimum over Re of ψ_e at ε = 0.4 is 1.9079 at Re ≈ 6.1 (note §6.4).
   double minimum = 10;
-  for (double lg = -1; lg < 2; lg += 0.001) minimum = std::min(minimum, ML::equivalent_exponent(0.4, std::pow(10.0, lg)));
+  for (double lg = -1; lg < 2; lg += 0.001)
+    minimum = std::min(minimum, ML::equivalent_exponent(0.4, std::pow(10.0, lg)));
   CHECK(minimum == doctest::Approx(1.9079).epsilon(1e-4));
 }
 
@@ -94,4 +100,75 @@ TEST_CASE("implicit derivative: d ln Re*/d ln Re = C = 1/(1 + Re* N ln ε) (seed
       const double c = 1 / (1 + re_star * n_prime * std::log(eps));
       CHECK(r.derivative[0] * re / re_star == doctest::Approx(c).epsilon(1e-13));
     }
+}
+
+TEST_CASE("Re* over every finite state: the Newton (n → 2.4) and Stokes (n → 4.8) asymptotes of eq. 3.24") {
+  // Where 0.175 Re*^¾ ≫ 1, eq. 3.24 gives n = 2.4 to rounding, so ln Re* = ln Re − 2.4 ln ε; where
+  // it is ≪ 1, n = 4.8 and ln Re* = ln Re − 4.8 ln ε. The Halley step of the solver once formed
+  // (0.175 Re*^¾)⁴, which overflowed (and gave NaN) beyond ln Re* ≈ 239 in double, 32 in float.
+  using settling::detail::solve_terminal_reynolds;
+  const auto log_re_star = [](auto re, auto eps) { return solve_terminal_reynolds(re, eps).log_terminal_reynolds; };
+  struct Case {
+    double re, eps, n;
+  };
+  const double huge = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+  for (const Case c : {Case{1e300, 0.01, 2.4}, Case{1e300, 1e-100, 2.4}, Case{1e10, 1e-300, 2.4}, Case{huge, tiny, 2.4},
+                       Case{1e-300, 0.5, 4.8}, Case{1e-300, 1e-30, 4.8}, Case{tiny, 0.9, 4.8}}) {
+    INFO("Re=" << c.re << " eps=" << c.eps);
+    const double asymptote = std::log(c.re) - c.n * std::log(c.eps);
+    CHECK(log_re_star(c.re, c.eps) == doctest::Approx(asymptote).epsilon(1e-14));
+  }
+  CHECK(settling::richardson_zaki_terminal_reynolds(1e300, 0.01) == doctest::Approx(1e300 * std::pow(0.01, -2.4)));
+  CHECK(settling::richardson_zaki_terminal_reynolds(1e300, 1e-100) == std::numeric_limits<double>::infinity());
+  CHECK_THROWS_WITH_AS(
+      settling::richardson_zaki_terminal_reynolds_checked(1e300, 1e-100),
+      doctest::Contains("result 'terminal_reynolds' = inf is not finite for reynolds = 1.0000000000000001e+300"),
+      std::domain_error);
+  CHECK(settling::richardson_zaki_terminal_reynolds_checked(1e300, 0.01) ==
+        settling::richardson_zaki_terminal_reynolds(1e300, 0.01));
+  CHECK(log_re_star(1e30f, 0.5f) == doctest::Approx(std::log(1e30) - 2.4 * std::log(0.5)).epsilon(1e-6));
+  CHECK(settling::richardson_zaki_terminal_reynolds(1e30f, 0.5f) ==
+        doctest::Approx(1e30 * std::pow(0.5, -2.4)).epsilon(1e-5));
+  CHECK(settling::richardson_zaki_terminal_reynolds(3e38f, 1e-30f) == std::numeric_limits<float>::infinity());
+}
+
+TEST_CASE("Re* where n(Re*) is a step of height 2.4 |ln ε| (ε ≪ 1): the root of eq. 3.53 to rounding, no cycling") {
+  // ε = 2.3e-9, Re = 2.1e-37: Halley's iteration alone cycles here between the two flat parts of
+  // n; the safeguarded one must still return the root of x + n(eˣ) ln ε = ln Re.
+  for (const auto& [re, eps] : {std::pair{2.1322746435998335e-37, 2.3217596236941965e-09},
+                                std::pair{6.3912104805310214e-91, 6.3937804997894256e-37},
+                                std::pair{2.9973843420186996e-133, 1.834351405783779e-54}}) {
+    const auto r = settling::detail::solve_terminal_reynolds(re, eps);
+    const double x = r.log_terminal_reynolds, log_eps = std::log(eps);
+    const double n = 2.4 + 2.4 / (1 + 0.175 * std::exp(0.75 * x));  // seed 000 eq. 3.24
+    INFO("Re=" << re << " eps=" << eps << " ln Re*=" << x);
+    // To rounding of its terms, of size |ln Re| and n |ln ε|.
+    CHECK(std::abs(x + n * log_eps - std::log(re)) <= 1e-15 * (std::abs(std::log(re)) + n * std::abs(log_eps)));
+    CHECK(r.scaled_power == doctest::Approx(0.175 * std::exp(0.75 * x)).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("β at extreme Re*: finite where representable, equal to the Newton limit; float as double") {
+  // With Re* → ∞, (0.63 √Re* + 4.8)² → 0.3969 Re* and n → 2.4, so eq. 3.65 tends to Newton's
+  // regime, β_classical = ¾ · 0.3969 ρ_f w (1 − ε) ε^−2.8 / d (C_D = 0.63², Dallavalle).
+  // μ_f = 1e-298 puts ln Re* between 670 and 1300: where the Halley step overflowed, and (for
+  // ε <= 1e-10) where Re*, E² and the product (√Re E²)² leave the range of double.
+  for (double eps : {1e-100, 1e-10, 0.01, 0.3, 0.9}) {
+    const DragState<double> s{.voidage = eps, .slip = 1.0, .fluid = {1e3, 1e-298}, .diameter = 1e-3};
+    const double newton = 0.75 * 0.3969 * 1e3 * 1.0 * (1 - eps) * std::pow(eps, -2.8) / 1e-3;
+    INFO("eps=" << eps);
+    CHECK(ML{}(s).classical() == doctest::Approx(newton).epsilon(1e-13));
+    CHECK(ML{}.with_derivatives(s).classical().value == ML{}(s).classical());
+  }
+  // Not representable: +∞, not NaN; at ε = 1 exactly 0 even where μ_f/d² overflows.
+  CHECK(ML{}(DragState<double>{1e-300, 1.0, {1e3, 1e-298}, 1e-3}).classical() ==
+        std::numeric_limits<double>::infinity());
+  CHECK(ML{}(DragState<double>{1.0, 1.0, {1e3, 1e300}, 1e-10}).classical() == 0.0);
+  // Float beyond ln Re* = 32 (Re* ≈ 5e14), once NaN: agrees with double, derivatives finite.
+  const DragState<float> sf{0.1f, 1e4f, {2e4f, 1e-6f}, 0.1f};
+  const DragState<double> sd{0.1f, 1e4f, {2e4f, 1e-6f}, 0.1f};
+  CHECK(double(ML{}(sf).classical()) == doctest::Approx(ML{}(sd).classical()).epsilon(1e-5));
+  const DragDerivatives<float> d = ML{}.with_derivatives(sf).classical();
+  CHECK(d.value == ML{}(sf).classical());
+  CHECK((std::isfinite(d.d_voidage) && std::isfinite(d.d_slip)));
 }

@@ -87,6 +87,46 @@ TEST_CASE("out of domain: Beetstra polydisperse species of a two-species mixture
                        doctest::Contains("'species' = 2"), std::domain_error);
 }
 
+TEST_CASE("in the domain, β out of the range of the type: checked throws, naming law, result and state") {
+  // Valid arguments whose β the floating type cannot represent: ε^−α overflowing in float at a
+  // subnormal ε, μ_f/d² overflowing in double; at ε = 1 the overflow meets φ = 0 (∞·0 = NaN).
+  // The hot path gives ∞ or NaN there (documented preconditions hold; the result does not);
+  // `checked` must give a status instead.
+  const auto throws_for = [](const auto& state, const char* shown) {
+    for (const drag::AnyDragLaw& any : drag::all_drag_laws) {
+      const std::string name(drag::name_of(any));
+      INFO(name, " at ", std::string(shown));
+      const std::string value = domain_error_message([&] { (void)drag::evaluate_checked(any, state); });
+      CHECK(value.starts_with("fluidbed::" + name + ": result 'beta."));
+      CHECK(value.find(shown) != std::string::npos);
+      const std::string derivatives =
+          domain_error_message([&] { (void)drag::evaluate_with_derivatives_checked(any, state); });
+      CHECK(derivatives.starts_with("fluidbed::" + name + ": result '"));
+    }
+  };
+  throws_for(drag::DragState<float>{1e-43f, 1.0f, {1.0f, 1e-5f}, 1e-3f}, "state {voidage = 9.9492190967062012e-44,");
+  throws_for(drag::DragState<double>{0.5, 0.1, {1.25, 1.8e-5}, 1e-200}, "diameter = 9.9999999999999998e-201}");
+  throws_for(drag::DragState<double>{0.5, 0.1, {1.25, 1e300}, 1e-4}, "fluid.viscosity = 1.0000000000000001e+300");
+  // At ε = 1 with μ_f/d² = ∞: NaN (∞·0) from the hot path, except Mazzei–Lettieri's, whose
+  // logarithmic fallback gives the exact 0 (mazzei_lettieri.hpp); either a status or a finite β.
+  const drag::DragState<double> clear{1.0, 0.1, {1.25, 1e300}, 1e-10};
+  for (const drag::AnyDragLaw& any : drag::all_drag_laws) {
+    INFO(drag::name_of(any));
+    if (std::isfinite(drag::evaluate(any, clear).classical()))
+      CHECK(drag::evaluate_checked(any, clear).classical() == drag::evaluate(any, clear).classical());
+    else
+      CHECK_THROWS_WITH_AS(drag::evaluate_checked(any, clear), doctest::Contains("nan is not finite"),
+                           std::domain_error);
+  }
+  // A subnormal species diameter: φ_j/d_j overflows in the Sauter mean.
+  const std::array<drag::Species<double>, 2> mixture{{{0.25, 1e-320}, {0.125, 2e-4}}};
+  for (std::size_t i = 0; i < 2; ++i)
+    CHECK_THROWS_WITH_AS(drag::BeetstraPolydisperse::published().checked(
+                             drag::PolydisperseDragState<double>{mixture, i, 0.1, {1.25, 1.8e-5}}),
+                         doctest::Contains("is not finite for state {mixture = {{0.25, 9.9998886718268301e-321}"),
+                         std::domain_error);
+}
+
 TEST_CASE("out of domain: Syamlal-O'Brien calibration from minimum fluidization") {
   check_entry_point("SyamlalOBrien::from_minimum_fluidization",
                     concatenated({{"minimum_fluidization_velocity", 5e-3, not_positive},

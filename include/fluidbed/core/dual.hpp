@@ -19,6 +19,7 @@
 #include <concepts>
 #include <numbers>
 #include <type_traits>
+#include <utility>
 
 #include "config.hpp"
 
@@ -50,6 +51,21 @@ template <class T>
 FLUIDBED_HOST_DEVICE constexpr const T& value_of(const T& x) { return x; }
 template <class T, int N>
 FLUIDBED_HOST_DEVICE constexpr const T& value_of(const Dual<T, N>& x) { return x.value; }
+
+// The plain floating type of a scalar or a dual number.
+template <class S>
+using value_type_of = std::remove_cvref_t<decltype(value_of(std::declval<const S&>()))>;
+
+// A closure's constant (a switch point of a piecewise law, a bound) rounded once to the plain
+// type of S, for the closure to compare its argument with. Dual's comparisons round a constant
+// to T, while a float compared with a double constant directly is compared in double: at
+// ε = 0.85f, 0.85f > 0.85 but 0.85f <= float(0.85), and the value (S = float) and the
+// derivatives (S = Dual<float, N>) would take different branches. Rounded here, both compare
+// the same two numbers.
+template <class S>
+FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(double constant) {
+  return value_type_of<S>(constant);
+}
 
 namespace detail {
 

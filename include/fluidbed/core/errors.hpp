@@ -4,7 +4,7 @@
 // builds only. The checked entry points call these helpers, which throw
 // std::domain_error with the function, the argument's name and its offending value:
 //   fluidbed::<function>: argument '<argument>' = <value> is out of domain (<requirement>)
-// Every helper rejects NaN and ±∞.
+// Every helper rejects NaN and ±∞. require_finite_result checks a result the same way.
 #pragma once
 
 #include <cmath>
@@ -49,6 +49,23 @@ void require_in_interval(std::string_view function, std::string_view argument, c
 }
 
 }  // namespace detail
+
+// For the checked entry points, after the evaluation: throws std::domain_error unless the
+// result `value` is finite. Arguments that pass validation can still have a result the
+// floating type cannot represent (an overflow to ∞, or NaN where it meets an exact 0); the
+// checked contract is then a status, never a silent ∞ or NaN. `describe_arguments()` returns
+// the arguments as text; it is called on failure only, so that success builds no string:
+//   fluidbed::<function>: result '<result>' = <value> is not finite for <arguments> (...)
+template <class T, class DescribeArguments>
+void require_finite_result(std::string_view function, std::string_view result, const T& value,
+                           const DescribeArguments& describe_arguments) {
+  if (detail::is_finite_number(value)) return;
+  std::ostringstream message;
+  message.precision(17);
+  message << "fluidbed::" << function << ": result '" << result << "' = " << value << " is not finite for "
+          << describe_arguments() << " (arguments in the domain, result out of the range of the floating type)";
+  throw std::domain_error(message.str());
+}
 
 // The name of element `index` of an array argument, e.g. indexed_argument("fractions", 2)
 // is "fractions[2]".

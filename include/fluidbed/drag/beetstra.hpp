@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -152,6 +153,24 @@ FLUIDBED_HOST_DEVICE constexpr MixtureMoments<T> mixture_moments(std::span<const
   }
   return {phi, phi / surface};
 }
+
+namespace detail {
+
+// The state as text, for the messages of the checked entry point: every species, the species
+// asked for, its slip and the fluid.
+template <class T>
+std::string describe_state(const PolydisperseDragState<T>& s) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "state {mixture = {";
+  for (std::size_t j = 0; j < s.mixture.size(); ++j)
+    text << (j ? ", " : "") << "{" << s.mixture[j].volume_fraction << ", " << s.mixture[j].diameter << "}";
+  text << "}, species = " << s.species << ", slip = " << s.slip << ", fluid.density = " << s.fluid.density
+       << ", fluid.viscosity = " << s.fluid.viscosity << "}";
+  return text.str();
+}
+
+}  // namespace detail
 
 // β of one species in both conventions. For a polydisperse mixture the two are NOT
 // related by the factor ε species by species (see BeetstraPolydisperse), so both are
@@ -310,7 +329,9 @@ class BeetstraPolydisperse {
     return {unpack(b.classical), unpack(b.pressure_gradient), s.slip};
   }
 
-  // Checked entry point: throws std::domain_error naming the argument and its value.
+  // Checked entry point: throws std::domain_error naming the argument and its value, and, for a
+  // valid state whose β_i is not finite in either convention (a subnormal d_j overflowing
+  // φ_j/d_j, say), naming the result, its value and the state: a status, never ∞ or NaN.
   template <class T>
   PolydisperseDragCoefficient<T> checked(const PolydisperseDragState<T>& s) const {
     const std::string_view function = name();
@@ -330,7 +351,9 @@ class BeetstraPolydisperse {
     }
     require_in_open(function, "sum of mixture volume fractions", mixture_moments(s.mixture).solids_fraction, T(0),
                     T(1));
-    return (*this)(s);
+    const PolydisperseDragCoefficient<T> beta = (*this)(s);
+    detail::validate_result(function, beta, [&s] { return detail::describe_state(s); });
+    return beta;
   }
 
  private:

@@ -8,8 +8,9 @@
 //
 //   law(state)                    hot path, value             -> DragCoefficient<T>
 //   law.with_derivatives(state)   hot path, ∂β/∂ε and ∂β/∂w   -> DragCoefficientWithDerivatives<T>
-//   law.checked(state)            validates, throws std::domain_error, then law(state)
-//   law.checked_with_derivatives(state)   the same, then law.with_derivatives(state)
+//   law.checked(state)            validates the state, then law(state), and throws
+//                                 std::domain_error unless the result is finite
+//   law.checked_with_derivatives(state)   the same with law.with_derivatives(state)
 //
 // Convention. β [kg m⁻³ s⁻¹] is per unit suspension volume: the drag on the particles
 // per unit volume is β (u_f − v_p). Its value depends on the buoyancy the host code
@@ -20,6 +21,9 @@
 // A result never exposes a bare number: the caller must name the convention.
 #pragma once
 
+#include <limits>
+#include <sstream>
+#include <string>
 #include <string_view>
 
 #include "../core/config.hpp"
@@ -136,6 +140,61 @@ void validate(std::string_view function, const DragState<T>& s) {
   require_positive(function, "diameter", s.diameter);
 }
 
+namespace detail {
+
+// The state as text, for the messages of the checked entry points.
+template <class T>
+std::string describe_state(const DragState<T>& s) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "state {voidage = " << s.voidage << ", slip = " << s.slip << ", fluid.density = " << s.fluid.density
+       << ", fluid.viscosity = " << s.fluid.viscosity << ", diameter = " << s.diameter << "}";
+  return text.str();
+}
+
+// The names the checked entry points give the results they check, per convention.
+struct ResultNames {
+  std::string_view value, d_voidage, d_slip, force_slip_derivative;
+};
+
+constexpr ResultNames result_names(Buoyancy convention) {
+  return convention == Buoyancy::classical
+             ? ResultNames{"beta.classical", "d beta.classical/d voidage", "d beta.classical/d slip",
+                           "d (beta.classical slip)/d slip"}
+             : ResultNames{"beta.pressure_gradient", "d beta.pressure_gradient/d voidage",
+                           "d beta.pressure_gradient/d slip", "d (beta.pressure_gradient slip)/d slip"};
+}
+
+inline constexpr Buoyancy conventions[] = {Buoyancy::classical, Buoyancy::pressure_gradient};
+
+// For the checked entry points: throws std::domain_error (require_finite_result) unless β is
+// finite in both conventions (β_classical = β_pg/ε can overflow where β_pg does not). Any
+// coefficient type with in(Buoyancy) (one law, or one species of a mixture); the state is
+// described by describe_arguments() on failure.
+template <class Coefficient, class DescribeArguments>
+void validate_result(std::string_view function, const Coefficient& beta, const DescribeArguments& describe_arguments) {
+  for (Buoyancy b : conventions) require_finite_result(function, result_names(b).value, beta.in(b), describe_arguments);
+}
+
+// The same for β with derivatives: β, ∂β/∂ε, ∂β/∂w and ∂(βw)/∂w finite in both conventions,
+// except ∂β/∂w = +∞ at w = 0, the true derivative of the laws whose C_D·Re has a fractional
+// power of Re (DragCoefficientWithDerivatives).
+template <class T>
+void validate_result(std::string_view function, const DragState<T>& s, const DragCoefficientWithDerivatives<T>& beta) {
+  const auto describe = [&s] { return describe_state(s); };
+  validate_result(function, beta.coefficient(), describe);
+  for (Buoyancy b : conventions) {
+    const DragDerivatives<T> d = beta.in(b);
+    const ResultNames names = result_names(b);
+    require_finite_result(function, names.d_voidage, d.d_voidage, describe);
+    if (!(s.slip == T(0) && d.d_slip == std::numeric_limits<T>::infinity()))
+      require_finite_result(function, names.d_slip, d.d_slip, describe);
+    require_finite_result(function, names.force_slip_derivative, beta.force_slip_derivative(b), describe);
+  }
+}
+
+}  // namespace detail
+
 // CRTP base: Law provides
 //   static constexpr Buoyancy native_buoyancy;
 //   std::string_view name() const;        // the name used for run-time lookup
@@ -145,7 +204,8 @@ void validate(std::string_view function, const DragState<T>& s) {
 template <class Law>
 struct DragLaw {
   // Hot path. Preconditions (asserted in debug builds): ε ∈ (0, 1], w >= 0, ρ_f, μ_f, d > 0,
-  // all finite. Result finite and >= 0 (> 0 for ε < 1).
+  // all finite. Result finite and >= 0 (> 0 for ε < 1) wherever β is representable in T;
+  // beyond (μ_f/d² or ε^−n overflowing) +∞, or NaN where ∞ meets an exact 0: `checked` reports it.
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr DragCoefficient<T> operator()(const DragState<T>& s) const {
     FLUIDBED_EXPECTS(s.voidage > T(0) && s.voidage <= T(1) && s.slip >= T(0));
@@ -161,23 +221,32 @@ struct DragLaw {
     FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0) && s.diameter > T(0));
     using D = Dual<T, 2>;
     const D beta = self().native_beta(D::variable(s.voidage, 0), D::variable(s.slip, 1), s.fluid, s.diameter);
-    return DragCoefficientWithDerivatives<T>(
-        Law::native_buoyancy, DragDerivatives<T>{beta.value, beta.derivative[0], beta.derivative[1]}, s.voidage,
-        s.slip);
+    return DragCoefficientWithDerivatives<T>(Law::native_buoyancy,
+                                             DragDerivatives<T>{beta.value, beta.derivative[0], beta.derivative[1]},
+                                             s.voidage, s.slip);
   }
 
-  // Checked entry point: throws std::domain_error naming the argument and its value.
+  // Checked entry point. Throws std::domain_error naming the argument and its value for a state
+  // out of the hot path's domain, and, for a state inside it, naming the result, its value and
+  // the state when β is not finite in either convention: a state whose β the floating type
+  // cannot represent (μ_f/d² or ε^−n overflowing, e.g. d = 1e-200 m, or ε = 1e-43 in float) gives
+  // a status, never ∞ or NaN.
   template <class T>
   DragCoefficient<T> checked(const DragState<T>& s) const {
     validate(self().name(), s);
-    return (*this)(s);
+    const DragCoefficient<T> beta = (*this)(s);
+    detail::validate_result(self().name(), beta, [&s] { return detail::describe_state(s); });
+    return beta;
   }
 
-  // Checked entry point with ∂β/∂ε and ∂β/∂w (same validation).
+  // Checked entry point with ∂β/∂ε and ∂β/∂w: the validation of `checked`, and the derivatives
+  // must be finite too (∂β/∂w may be the documented +∞ at w = 0).
   template <class T>
   DragCoefficientWithDerivatives<T> checked_with_derivatives(const DragState<T>& s) const {
     validate(self().name(), s);
-    return with_derivatives(s);
+    const DragCoefficientWithDerivatives<T> beta = with_derivatives(s);
+    detail::validate_result(self().name(), s, beta);
+    return beta;
   }
 
   // True if the state lies inside the range the law was fitted or derived for.

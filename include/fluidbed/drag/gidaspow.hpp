@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "../core/dual.hpp"
 #include "constant_exponent.hpp"
 #include "drag_law.hpp"
 #include "ergun.hpp"
@@ -32,9 +33,8 @@ struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
   constexpr ValidityRange validity() const { return {0.36, 1.0, 0.0, 1.0e5}; }
 
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid,
-                                     const T& diameter) const {
-    if (voidage < switch_voidage) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
+  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
+    if (voidage < constant_as<S>(switch_voidage)) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
     return pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
   }
 
@@ -72,8 +72,7 @@ struct GidaspowBlended : DragLaw<GidaspowBlended> {
   }
 
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid,
-                                     const T& diameter) const {
+  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S psi = blending_weight(voidage);
     return (1.0 - psi) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
            psi * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);

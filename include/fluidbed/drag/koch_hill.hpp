@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 #include "../properties.hpp"
 #include "dimensionless_force.hpp"
 #include "drag_law.hpp"
@@ -85,7 +86,7 @@ struct KochHill : DragLaw<KochHill> {
   FLUIDBED_HOST_DEVICE static S f1(const S& phi) {
     using std::exp;
     using std::sqrt;
-    if (phi <= 0.1) return sqrt(2.0 / phi) / 40.0;
+    if (phi <= constant_as<S>(0.1)) return sqrt(2.0 / phi) / 40.0;
     return 0.11 + 5.1e-4 * exp(11.6 * phi);
   }
 
@@ -98,7 +99,7 @@ struct KochHill : DragLaw<KochHill> {
   // F3(φ): slope in Re_h of the high-Re linear branch.
   template <class S>
   FLUIDBED_HOST_DEVICE static S f3(const S& phi) {
-    if (phi < 0.0953) return 0.9351 * phi + 0.03667;
+    if (phi < constant_as<S>(0.0953)) return 0.9351 * phi + 0.03667;
     const S eps = 1.0 - phi;
     return 0.0673 + 0.212 * phi + 0.0232 / ((eps * eps) * (eps * eps) * eps);
   }
@@ -107,7 +108,7 @@ struct KochHill : DragLaw<KochHill> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
     using std::sqrt;
-    if (phi <= dilute_solids_fraction) return (f2(phi) - 1.0) / (0.375 - f3(phi));
+    if (phi <= constant_as<S>(dilute_solids_fraction)) return (f2(phi) - 1.0) / (0.375 - f3(phi));
     const S a = f1(phi);
     const S b = f3(phi);
     return (b + sqrt(b * b - 4.0 * a * (f0(phi) - f2(phi)))) / (2.0 * a);
@@ -118,7 +119,7 @@ struct KochHill : DragLaw<KochHill> {
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     const S re_h = 0.5 * re;
     if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= dilute_solids_fraction) return 1.0 + 0.375 * re_h;
+    if (phi <= constant_as<S>(dilute_solids_fraction)) return 1.0 + 0.375 * re_h;
     return f0(phi) + f1(phi) * (re_h * re_h);
   }
 
@@ -138,7 +139,7 @@ struct KochHill : DragLaw<KochHill> {
     using std::sqrt;
     const S eps = 1.0 - phi;
     const S carman = 10.0 * phi / (eps * eps * eps);
-    if (phi >= dense_solids_fraction) return carman;
+    if (phi >= constant_as<S>(dense_solids_fraction)) return carman;
     if (!(phi > 0.0)) return S(1.0);
     const S weight = exp(-10.0 * (dense_solids_fraction - phi) / phi);
     const S rational = (1.0 + 3.0 * sqrt(0.5 * phi) + 135.0 / 64.0 * phi * log(phi) + a * phi) /

@@ -13,7 +13,6 @@
 
 namespace fluidbed::drag {
 
-
 // Mazzei, L., Lettieri, P. (2007), "A drag force closure for uniformly dispersed
 // fluidized suspensions", Chem. Eng. Sci. 62, 6129–6142, doi:10.1016/j.ces.2007.06.028;
 // seed 000 §3.4.5 and Table 3.1:
@@ -65,8 +64,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
       using std::exp;
       using std::log;
       const T log_re_star = log(re_star);
-      const T slope = T(1) + re_star * settling::richardson_zaki_exponent_mazzei_derivative(re_star) *
-                                 T(log(value_of(voidage)));
+      const T slope =
+          T(1) + re_star * settling::richardson_zaki_exponent_mazzei_derivative(re_star) * T(log(value_of(voidage)));
       const S residual = log_re_star + settling::richardson_zaki_exponent_mazzei(re_star) * log(voidage) - log(re);
       S result = exp(log_re_star - residual / slope);
       result.value = re_star;  // the same value as the plain evaluation, bit for bit
@@ -104,11 +103,11 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   // √Re* = √Re E (eq. 3.53) and ε^(1 − n_e) = ε E².
   template <class T>
   struct SolvedState {
-    T root_reynolds;   // √Re
+    T root_reynolds;       // √Re
     T inverse_root_power;  // E
-    T scaled_power;    // y = 0.175 Re*^¾
-    T log_voidage;     // ln ε
-    T exponent;        // n_e(Re*)
+    T scaled_power;        // y = 0.175 Re*^¾
+    T log_voidage;         // ln ε
+    T exponent;            // n_e(Re*)
   };
 
   template <class T>
@@ -121,18 +120,29 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   }
 
   // β = ¾ μ_f (1 − ε) ε (0.63 √Re E² + 4.8 E)² / d² of a solved state: one exp after the solve.
+  // Where a factor leaves the range of T while β does not (μ_f/d² → 0 against E = ε^(−n/2) → ∞,
+  // e.g. ε = 1e-100, Re = 1e198 in double: E² = 1e240, (√Re E²)² = 1e438, β ~ 1e285), the
+  // product is ∞ or NaN (∞·0); it is then taken as the exponential of the sum of the factors'
+  // logarithms, each finite (ln E = −n ln ε/2), which is ∞ only where β itself is and 0 at ε = 1.
   template <class T>
   FLUIDBED_HOST_DEVICE static T beta_of_state(const SolvedState<T>& state, const T& voidage, const Fluid<T>& fluid,
                                               const T& diameter) {
+    using std::exp;
+    using std::isfinite;
+    using std::log;
+    using std::log1p;
     const T prefactor = 0.75 * fluid.viscosity / (diameter * diameter);
     const T e = state.inverse_root_power;
     const T root = (T(0.63) * state.root_reynolds * e + T(4.8)) * e;
-    return prefactor * (T(1) - voidage) * voidage * root * root;
+    const T beta = prefactor * (T(1) - voidage) * voidage * root * root;
+    if (isfinite(beta)) return beta;
+    const T log_e = T(-0.5) * state.exponent * state.log_voidage;  // (0.63 √Re E² + 4.8 E)² = E⁴ (0.63 √Re + 4.8/E)²
+    return exp(log(T(0.75)) + log(fluid.viscosity) - T(2) * log(diameter) + log1p(-voidage) + state.log_voidage +
+               T(4) * log_e + T(2) * log(T(0.63) * state.root_reynolds + T(4.8) / e));
   }
 
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid,
-                                     const T& diameter) const {
+  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     using std::exp;
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);

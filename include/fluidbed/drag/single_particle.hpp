@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 
 namespace fluidbed::drag {
 
@@ -18,7 +19,9 @@ struct StokesCoefficient {
   static constexpr std::string_view name = "Stokes";
   static constexpr double reynolds_max = 0.1;
   template <class S>
-  FLUIDBED_HOST_DEVICE static constexpr S cd_times_re(const S& /*re*/) { return S(24); }
+  FLUIDBED_HOST_DEVICE static constexpr S cd_times_re(const S& /*re*/) {
+    return S(24);
+  }
 };
 
 // Schiller & Naumann (1933), Z. Ver. Dtsch. Ing. 77, 318; as printed in seed 000
@@ -30,7 +33,7 @@ struct SchillerNaumannCoefficient {
   template <class S>
   FLUIDBED_HOST_DEVICE static S cd_times_re(const S& re) {
     using std::pow;
-    if (re < newton_switch_reynolds) return 24.0 * (1.0 + 0.15 * pow(re, 0.687));
+    if (re < constant_as<S>(newton_switch_reynolds)) return 24.0 * (1.0 + 0.15 * pow(re, 0.687));
     return 0.44 * re;
   }
 };

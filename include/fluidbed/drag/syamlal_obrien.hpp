@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 #include "../core/errors.hpp"
 #include "../properties.hpp"
 #include "../settling/terminal_velocity.hpp"
@@ -85,11 +86,19 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     if (!(b > T(0)))
       fluidbed::detail::throw_domain_error(function, "minimum_fluidization_velocity", velocity,
                                            "too small for this law: it implies B <= 0");
-    if (voidage <= T(switch_voidage)) {
-      const T c1 = b / pow(voidage, T(1.28));
-      return SyamlalOBrien(static_cast<double>(c1), static_cast<double>(T(1.28) + log(c1) / log(T(switch_voidage))));
-    }
-    return continuous_at_switch(static_cast<double>(log(b) / log(voidage)));
+    const SyamlalOBrien law = [&] {
+      if (voidage <= T(switch_voidage)) {
+        const T c1 = b / pow(voidage, T(1.28));
+        return SyamlalOBrien(static_cast<double>(c1), static_cast<double>(T(1.28) + log(c1) / log(T(switch_voidage))));
+      }
+      return continuous_at_switch(static_cast<double>(log(b) / log(voidage)));
+    }();
+    // Valid data can still imply parameters beyond the range (ε_mf → 1: d1 = ln B/ln ε_mf with
+    // ln ε_mf → 0; a subnormal g), with which β would be 0, ∞ or NaN (found by fuzz/).
+    if (!(std::isfinite(law.c1()) && law.c1() > 0 && std::isfinite(law.d1())))
+      fluidbed::detail::throw_domain_error(function, "minimum_fluidization_voidage", voidage,
+                                           "with these data it implies c1 or d1 beyond the floating-point range");
+    return law;
   }
 
   constexpr double c1() const { return c1_; }
@@ -107,7 +116,7 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     using std::pow;
     using std::sqrt;
     const S a = pow(voidage, 4.14);
-    const S b = voidage <= switch_voidage ? S(c1_ * pow(voidage, 1.28)) : S(pow(voidage, d1_));
+    const S b = voidage <= constant_as<S>(switch_voidage) ? S(c1_ * pow(voidage, 1.28)) : S(pow(voidage, d1_));
     const S x = 0.06 * re_s;
     const S difference = a - x;
     const S root = sqrt(difference * difference + 4.0 * b * x);

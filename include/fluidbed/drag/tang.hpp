@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 #include "../properties.hpp"
 #include "beetstra.hpp"
 #include "dimensionless_force.hpp"
@@ -54,7 +55,7 @@ struct Tang2015 : DragLaw<Tang2015> {
     const S linear = 0.11 * phi * (1.0 + phi) - 0.00456 / eps4;
     const S power = 0.169 * eps + 0.0644 / eps4;
     const S stokes = detail::van_der_hoef_stokes_force(phi);
-    if (re <= fitted_reynolds_max) return stokes + linear * re + power * pow(re, 0.657);
+    if (re <= constant_as<S>(fitted_reynolds_max)) return stokes + linear * re + power * pow(re, 0.657);
     return stokes + (linear + power * std::pow(fitted_reynolds_max, 0.657 - 1.0)) * re;
   }
 

@@ -22,10 +22,12 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string_view>
 #include <type_traits>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 #include "../core/errors.hpp"
 
 namespace fluidbed::settling {
@@ -90,10 +92,10 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
                                                      const std::type_identity_t<S>& wall_ratio = S(0)) {
   using std::pow;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)) && !(wall_ratio < S(0)) && wall_ratio < S(1));
-  if (terminal_reynolds < 0.2) return 4.65 + 19.5 * wall_ratio;
-  if (terminal_reynolds < 1.0) return (4.35 + 17.5 * wall_ratio) * pow(terminal_reynolds, -0.03);
-  if (terminal_reynolds < 200.0) return (4.45 + 18.0 * wall_ratio) * pow(terminal_reynolds, -0.1);
-  if (terminal_reynolds < 500.0) return 4.45 * pow(terminal_reynolds, -0.1);
+  if (terminal_reynolds < constant_as<S>(0.2)) return 4.65 + 19.5 * wall_ratio;
+  if (terminal_reynolds < constant_as<S>(1.0)) return (4.35 + 17.5 * wall_ratio) * pow(terminal_reynolds, -0.03);
+  if (terminal_reynolds < constant_as<S>(200.0)) return (4.45 + 18.0 * wall_ratio) * pow(terminal_reynolds, -0.1);
+  if (terminal_reynolds < constant_as<S>(500.0)) return 4.45 * pow(terminal_reynolds, -0.1);
   return S(2.39);
 }
 
@@ -186,15 +188,27 @@ FLUIDBED_HOST_DEVICE S exponent_of_scaled_power(const S& y) {
 
 // Halley's method on g(x) = x + n(eˣ) ln ε − ln Re, x = ln Re_t, from the middle of the
 // bracket [ln Re − 2.4 ln ε, ln Re − 4.8 ln ε] (n = 3.6). With y = 0.175 e^(0.75x),
-// p = 1 + y and L = ln ε (seed 000 note §6.3):
-//   g = G/p,      G = (x + 2.4 L − ln Re) p + 2.4 L
-//   g' = S₁/p²,   S₁ = p² − 1.8 y L   (≥ p², so g' ≥ 1 and the root is unique)
-//   g'' = S₂/p³,  S₂ = −1.35 L y (1 − y)
-// and the Halley step 2 g g'/(2 g'² − g g'') = 2 G S₁ p/(2 S₁² − G S₂): one exp and one
-// division per step, no pow. Convergence is cubic: a step of size s leaves an error below
-// 0.02 s³ on ε ∈ [0.01, 1], Re ∈ [1e-10, 1e10], hence the stop at s ≤ 4 ∛ε_machine;
-// 2.3 steps on average over a fluidized bed's states, at most 4.
-// Preconditions: Re > 0, ε ∈ (0, 1].
+// r = 1/(1 + y) and L = ln ε (seed 000 note §6.3 writes the same in p = 1 + y):
+//   n = 2.4 + 2.4 r,  y r = 1 − r,  dy/dx = 0.75 y,
+//   g   = x + 2.4 L − ln Re + 2.4 L r
+//   g'  = 1 − 1.8 L y r²                 = 1 − 1.8 L r (1 − r)          (≥ 1: the root is unique)
+//   g'' = −1.35 L y (1 − y) r³           = −1.35 L r (1 − r)(2r − 1)
+// and the Halley step 2 g g'/(2 g'² − g g''): one exp and two divisions per step, no pow.
+// Written in r ∈ [0, 1], every term is bounded by a multiple of |L| and of the distance to
+// the root, whatever Re and ε: the form in p (g = G/p, S₁ = p² g', S₂ = p³ g'') squares
+// S₁ ≈ y², which overflows once ln Re_t >~ 239 (double) or 32 (float) and turns the step
+// into ∞/∞. Here y may overflow to +∞ (Re_t beyond the range of T) and r is then 0: n = 2.4
+// exactly and g is linear.
+// Safeguard. For |L| >~ 20 (ε <~ 1e-9) n(eˣ) is a step of height 2.4 |L| a few units of x
+// wide, and Halley's (or Newton's) iteration can cycle across it. g is increasing, so the
+// iteration keeps a bracket [low, high] of the root (g(low) <= 0 <= g(high)) and bisects
+// it whenever a step would leave it or fails to halve the step before (rtsafe of Press et
+// al., Numerical Recipes, 3rd ed. §9.4); on a fluidized bed's states no step does. It stops
+// only after a Halley step, whose size bounds the error (a bisection's does not).
+// Convergence is cubic: a step of size s leaves an error below 0.02 s³ on ε ∈ [0.01, 1],
+// Re ∈ [1e-10, 1e10], hence the stop at s ≤ 4 ∛ε_machine; 2.3 steps on average over a
+// fluidized bed's states, at most 4.
+// Preconditions: Re > 0, ε ∈ (0, 1], both finite.
 template <class T>
 FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T& reynolds, const T& voidage) {
   using std::abs;
@@ -204,21 +218,33 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T
   const T log_voidage = log(voidage);
   const T log_re = log(reynolds);
   const T stop = T(4) * cbrt(std::numeric_limits<T>::epsilon());
+  // The bracket, widened by 1 so that a root at one of its ends (n = 4.8 or 2.4 to rounding)
+  // lies strictly inside it: a step that lands on an end is then one that cycles.
+  T low = log_re - T(2.4) * log_voidage - T(1);
+  T high = log_re - T(4.8) * log_voidage + T(1);
   T x = log_re - T(3.6) * log_voidage;
+  T previous = high - low;  // the size of the last step taken
   T y{};
   for (int iteration = 0; iteration < 100; ++iteration) {
     y = T(0.175) * exp(T(0.75) * x);
-    const T p = T(1) + y;
-    const T g = (x + T(2.4) * log_voidage - log_re) * p + T(2.4) * log_voidage;
-    const T s1 = p * p - T(1.8) * y * log_voidage;
-    const T s2 = T(-1.35) * log_voidage * y * (T(1) - y);
-    const T step = T(2) * g * s1 * p / (T(2) * s1 * s1 - g * s2);
-    x -= step;
+    const T r = T(1) / (T(1) + y);
+    const T r_q = r * (T(1) - r);  // y r² = y/(1 + y)², from r so that y = ∞ gives 0
+    const T g = x + T(2.4) * log_voidage - log_re + T(2.4) * log_voidage * r;
+    const T d1 = T(1) - T(1.8) * log_voidage * r_q;
+    const T d2 = T(-1.35) * log_voidage * r_q * (T(2) * r - T(1));
+    const T step = T(2) * g * d1 / (T(2) * d1 * d1 - g * d2);
     if (abs(step) <= stop) {
+      x -= step;
       const T z = T(0.75) * step;
       y *= T(1) - z + T(0.5) * z * z;  // y at the updated x, to O(step³) ~ ε_machine
       break;
     }
+    // A step this large starts far enough from the root for the sign of g to be exact.
+    (g < T(0) ? low : high) = x;
+    const T next = x - step;
+    const T taken = next > low && next < high && abs(step) <= T(0.5) * previous ? next : T(0.5) * (low + high);
+    previous = abs(x - taken);
+    x = taken;
   }
   return {x, y, log_voidage};
 }
@@ -229,7 +255,9 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T
 // eq. 3.24 puts a bed fluidized at the superficial Reynolds number Re = ρ_f u_s d/μ_f at
 // the voidage ε:  Re = Re_t ε^n(Re_t)  (seed 000 §3.4.4.1, the procedure behind
 // Figs 3.1–3.5; the same relation defines Re* of eq. 3.53, the Mazzei–Lettieri drag's).
-// Re_t = Re at ε = 1 and Re_t = 0 at Re = 0. Preconditions: Re >= 0 finite, ε ∈ (0, 1].
+// Re_t = Re at ε = 1 and Re_t = 0 at Re = 0; +∞ where Re_t exceeds the range of T (ln Re_t,
+// which the solver returns, is finite for every finite Re and ε). Preconditions: Re >= 0 finite,
+// ε ∈ (0, 1].
 template <class T>
 FLUIDBED_HOST_DEVICE T richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage) {
   using std::exp;
@@ -302,11 +330,20 @@ T richardson_zaki_voidage_checked(const T& superficial_velocity, const std::type
   return richardson_zaki_voidage(superficial_velocity, terminal_velocity, exponent);
 }
 
+// Also throws std::domain_error where Re_t exceeds the range of T (e.g. Re = 1e300, ε = 1e-100).
 template <class T>
 T richardson_zaki_terminal_reynolds_checked(const T& reynolds, const T& voidage) {
-  require_non_negative("richardson_zaki_terminal_reynolds", "reynolds", reynolds);
-  require_in_half_open("richardson_zaki_terminal_reynolds", "voidage", voidage, T(0), T(1));
-  return richardson_zaki_terminal_reynolds(reynolds, voidage);
+  constexpr std::string_view function = "richardson_zaki_terminal_reynolds";
+  require_non_negative(function, "reynolds", reynolds);
+  require_in_half_open(function, "voidage", voidage, T(0), T(1));
+  const T terminal_reynolds = richardson_zaki_terminal_reynolds(reynolds, voidage);
+  require_finite_result(function, "terminal_reynolds", terminal_reynolds, [&] {
+    std::ostringstream text;
+    text.precision(17);
+    text << "reynolds = " << reynolds << ", voidage = " << voidage;
+    return text.str();
+  });
+  return terminal_reynolds;
 }
 
 }  // namespace fluidbed::settling
