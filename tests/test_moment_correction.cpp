@@ -233,6 +233,63 @@ TEST_CASE("degenerate and invalid inputs: a status, the moments returned as give
   for (int k = 0; k < 6; ++k) CHECK(std::isfinite(r.moments[k]));
 }
 
+// Found by fuzz/moment_inversion_fuzzer: the fallback M_k = M_0 r^k q^{k(k−1)/2} and McGraw's
+// factor c = exp(ln c) were applied without checking that the result is representable, and gave
+// +∞, 0 or NaN moments under status lognormal or mcgraw. A correction is now reported only with
+// finite positive moments; otherwise status failed and the moments exactly as given.
+TEST_CASE("corrections beyond the floating-point range: status failed and the moments as given") {
+  const auto as_given = [](const auto& r, std::span<const double> m) {
+    CHECK(r.status == CorrectionStatus::failed);
+    CHECK(r.iterations == 0);
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      CHECK(r.moments[k] == m[k]);
+      CHECK(r.ratio[k] == 1.0);
+      CHECK_FALSE(r.changed[k]);
+    }
+  };
+  // Not realizable (M_1 M_3 = 1 < M_2² = 1e400): the log-normal through M_0 … M_2 has
+  // q = M_0 M_2/M_1² = 1e200, so M_3 = M_0 r³ q³ = 1e600 overflows.
+  const std::array<double, 4> broad{1, 1, 1e200, 1};
+  as_given(correct(broad), broad);
+  // r = M_1/M_0 = 1e-600 underflows to 0, q = M_0 M_2/M_1² overflows: the fill would be NaN.
+  const std::array<double, 4> spanning{1e300, 1e-300, 1, 1};
+  as_given(correct(spanning), spanning);
+
+  // Note §7.2's mixture in metres with M_2 corrupted to 8e-323: ln c for M_2 is ~ +720, and
+  // c = e^720 overflows. McGraw alone fails; the full correction hands the set as given to the
+  // fill, here monodisperse (M_0 M_2 < M_1²): M_k = M_0 r^k, r = M_1/M_0.
+  std::array<double, 8> si{};
+  for (std::size_t k = 0; k < 8; ++k) si[k] = mixture[k] * std::pow(1e-6, double(k));
+  si[2] = 8e-323;
+  as_given(mcgraw(si), si);
+  const auto full = correct(si);
+  CHECK(full.status == CorrectionStatus::monodisperse);
+  const double r = si[1] / si[0];
+  CHECK(full.moments[0] == si[0]);
+  CHECK(full.moments[1] == si[1]);
+  for (int k = 2; k < 8; ++k) CHECK(full.moments[k] == doctest::Approx(si[0] * std::pow(r, k)).epsilon(1e-14));
+
+  // A sub-micron set in float whose moments above M_7 underflowed to 0 (found by the fuzzer):
+  // the log-normal through M_0 … M_2 has finite positive moments (M_12 ~ 3e20), but scaled by
+  // M_0 and the length √(M_2/M_0) ~ 5e-7 they overflow — no inversion could use them.
+  const std::array<float, 13> sub_micron{1.0006985e-06f,
+                                         7.4380165e-14f,
+                                         2.7475065e-19f,
+                                         2.0093646e-24f,
+                                         2.1968288e-29f,
+                                         3.1969341e-34f,
+                                         5.8094808e-39f,
+                                         1.2611686e-43f,
+                                         0,
+                                         0,
+                                         0,
+                                         0,
+                                         0};
+  const auto f = correct_moments<float, 8>(std::span<const float>(sub_micron));
+  CHECK(f.status == CorrectionStatus::failed);
+  for (std::size_t k = 0; k < sub_micron.size(); ++k) CHECK(f.moments[k] == sub_micron[k]);
+}
+
 TEST_CASE("randomly corrupted realizable sets always come back realizable (or at the boundary)") {
   std::mt19937_64 engine(17);
   const auto uniform = [&] { return double(engine() >> 11) * 0x1p-53; };

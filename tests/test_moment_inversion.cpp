@@ -149,6 +149,28 @@ TEST_CASE("scale invariance: a change of unit by a power of two gives bit-identi
     }
 }
 
+TEST_CASE("the length scale is read from exponents: a real-line set with a tiny mean inverts as the zero-mean one") {
+  // N(μ, 1), μ = 1e-300: m_k = E[Z^k] + k μ E[Z^(k−1)] to rounding. The mean alone as length
+  // scale (2^−997) put m̃_2 = 2^1994 out of range (invalid_input, found by fuzz/); √(m_2/m_0)
+  // does not. Reference: the probabilists' Gauss–Hermite rule, nodes ±√(3 ∓ √6), weights
+  // (3 ± √6)/12 (the zeros of He_4 = x⁴ − 6x² + 3 and its Christoffel numbers).
+  const double mu = 1e-300;
+  const std::array<double, 8> m{1, mu, 1, 3 * mu, 3, 5 * 3 * mu, 15, 7 * 15 * mu};
+  const double inner = std::sqrt(3 - std::sqrt(6.0)), outer = std::sqrt(3 + std::sqrt(6.0));
+  const std::array<double, 4> x{-outer, -inner, inner, outer};
+  const std::array<double, 4> w{(3 - std::sqrt(6.0)) / 12, (3 + std::sqrt(6.0)) / 12, (3 + std::sqrt(6.0)) / 12,
+                                (3 - std::sqrt(6.0)) / 12};
+  const auto r = invert<4>(m, {.support = Support::real_line});
+  REQUIRE(r.status == InversionStatus::ok);
+  for (int i = 0; i < 4; ++i) {
+    CHECK(r.quadrature.nodes[i] == doctest::Approx(x[i]).epsilon(1e-14));
+    CHECK(r.quadrature.weights[i] == doctest::Approx(w[i]).epsilon(1e-14));
+  }
+  const auto report = realizability<double, 4>(m, Support::real_line);
+  CHECK(report.status == InversionStatus::ok);
+  CHECK(invert_adaptive<4>(m, {.inversion = {.support = Support::real_line}}).status == InversionStatus::ok);
+}
+
 TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Dirac, zero mean on the real line") {
   const auto check = [](const std::array<double, 4>& m, InversionStatus status, int size, Support support) {
     const auto r = invert<2>(m, {.support = support});
@@ -170,8 +192,8 @@ TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Di
   check({1, -2, 4, -8}, InversionStatus::not_realizable, 0, plus);
   check({1, -2, 4, -8}, InversionStatus::reduced, 1, line);  // a Dirac at −2 on the line
   check({1, 1, 1, 1}, InversionStatus::reduced, 1, plus);  // a Dirac at 1, exact in binary
-  // A subnormal m_0 with ordinary higher moments: the mean overflows, so the set cannot be
-  // scaled to O(1); reported as invalid (it once came out as a node at +∞).
+  // A subnormal m_0 with ordinary higher moments: the mean, hence the node, overflows; reported
+  // as invalid (it once came out as a node at +∞).
   check({4.9e-324, 4.3e-4, 3.6e-7, 1.0e-10}, InversionStatus::invalid_input, 0, line);
   check({4.9e-324, 4.3e-4, 3.6e-7, 1.0e-10}, InversionStatus::invalid_input, 0, plus);
   check({1, 0, 1, 0}, InversionStatus::not_realizable, 0, plus);  // zero mean is not on (0, ∞)
@@ -247,4 +269,103 @@ TEST_CASE("a three-node rule whose nodes spread beyond the closed form's range i
     total += r.quadrature.weights[i];
   }
   CHECK(total == doctest::Approx(m[0]).epsilon(1e-12));
+}
+
+// Found by fuzz/moment_inversion_fuzzer: product-difference stopped at the first ζ_j <= 0,
+// which the real line allows, and cut the rule there. N(1/2, 1): ζ = 1/2, 2, −3/2, −4/3, 11/6
+// (ζ_2 = β_1/ζ_1, ζ_{2k+1} = α_k − ζ_{2k} with α_k = 1/2, β_k = k), and the three-node rule is
+// Gauss–Hermite shifted by 1/2: nodes 1/2 and 1/2 ± √3, weights 2/3 and 1/6.
+TEST_CASE("product-difference on the real line goes on past a negative ζ: N(1/2, 1), three nodes") {
+  const std::array<double, 6> m{1, 0.5, 1.25, 1.625, 4.5625, 8.78125};  // exact in binary
+  for (RecurrenceAlgorithm alg : algorithms) {
+    INFO(name(alg));
+    const auto r = invert<3>(m, {.algorithm = alg, .support = Support::real_line});
+    REQUIRE(r.status == InversionStatus::ok);
+    REQUIRE(r.quadrature.size == 3);
+    const double root3 = std::sqrt(3.0);
+    const std::array<double, 3> nodes{0.5 - root3, 0.5, 0.5 + root3}, weights{1.0 / 6, 2.0 / 3, 1.0 / 6};
+    for (int i = 0; i < 3; ++i) {
+      CHECK(r.quadrature.nodes[i] == doctest::Approx(nodes[i]).epsilon(1e-14));
+      CHECK(r.quadrature.weights[i] == doctest::Approx(weights[i]).epsilon(1e-14));
+    }
+    CHECK(r.boundary_distance == doctest::Approx(1 / 1.25).epsilon(1e-14));  // β_1/(m_2/m_0)
+  }
+  // On [0, ∞) the same set fails at ζ_3 = −3/2 with either algorithm.
+  for (RecurrenceAlgorithm alg : algorithms) {
+    INFO(name(alg));
+    const auto r = invert<3>(m, {.algorithm = alg});
+    CHECK(r.status == InversionStatus::reduced);
+    CHECK(r.quadrature.size == 1);
+    CHECK(r.first_failing_index == 3);
+    CHECK(r.failing_value == doctest::Approx(-1.5).epsilon(1e-14));
+  }
+}
+
+// PD's limit (recurrence.hpp): an exact ζ_{2k+1} = 0 makes β_{k+1} = ζ_{2k+1} ζ_{2k+2} = 0·∞.
+// N(1, 1) has ζ_3 = α_1 − β_1/α_0 = 0: PD keeps the two levels it has (nodes 0 and 2, weights
+// 1/2: Gauss–Hermite shifted by 1) and reports the undefined β_2 as NaN; Wheeler gives all three
+// (1 and 1 ± √3). Likewise a zero mean (ζ_1 = 0) leaves PD one node.
+TEST_CASE("product-difference on the real line stops with a status at an exact ζ = 0: N(1, 1), N(0, 1)") {
+  const std::array<double, 6> m{1, 1, 2, 4, 10, 26};
+  const auto pd = invert<3>(m, {.algorithm = RecurrenceAlgorithm::product_difference, .support = Support::real_line});
+  CHECK(pd.status == InversionStatus::reduced);
+  REQUIRE(pd.quadrature.size == 2);
+  CHECK(pd.quadrature.nodes[0] == doctest::Approx(0).scale(1).epsilon(1e-15));
+  CHECK(pd.quadrature.nodes[1] == doctest::Approx(2).epsilon(1e-15));
+  CHECK(pd.quadrature.weights[0] == doctest::Approx(0.5).epsilon(1e-15));
+  CHECK(pd.first_failing_index == 2);
+  CHECK(std::isnan(pd.failing_value));
+  const auto wheeler = invert<3>(m, {.support = Support::real_line});
+  REQUIRE(wheeler.status == InversionStatus::ok);
+  CHECK(wheeler.quadrature.nodes[2] == doctest::Approx(1 + std::sqrt(3.0)).epsilon(1e-15));
+
+  const std::array<double, 4> normal{1, 0, 1, 0};
+  const auto zero_mean =
+      invert<2>(normal, {.algorithm = RecurrenceAlgorithm::product_difference, .support = Support::real_line});
+  CHECK(zero_mean.status == InversionStatus::reduced);
+  REQUIRE(zero_mean.quadrature.size == 1);
+  CHECK(zero_mean.quadrature.nodes[0] == 0);
+  CHECK(zero_mean.boundary_distance == 1);
+  CHECK(std::isnan(zero_mean.failing_value));
+}
+
+// Found by fuzz/moment_inversion_fuzzer: a set whose scaled moments span ~1e-86 … 1e256 (a
+// huge m_0 with a geometric tail). PD renormalised its first column by the largest entry and so
+// pushed m_1 below the range: ζ_1 = α_0 came out 0, a node at 0 where m_1 ≠ 0. Whatever the node
+// count, a Gauss rule reproduces m_0 and m_1 (Σw = m_0, Σwx = m_0 α_0 = m_1).
+TEST_CASE("product-difference keeps ζ_1 = m_1/m_0 when its column spans more than the range") {
+  const std::array<double, 6> m{2.9214909123913038e+170, 5.3181319439445191e-06, 6.2454715945679317e-11,
+                                7.3360137638125056e-16,  8.6187390541864121e-21, 1.0127818810528304e-25};
+  for (Support support : {Support::positive_half_line, Support::real_line}) {
+    const auto r = invert<3>(m, {.algorithm = RecurrenceAlgorithm::product_difference, .support = support});
+    INFO("real line " << (support == Support::real_line));
+    REQUIRE((r.status == InversionStatus::ok || r.status == InversionStatus::reduced));
+    long double sum = 0, first = 0;
+    for (int i = 0; i < r.quadrature.size; ++i) {
+      sum += r.quadrature.weights[i];
+      first += (long double)r.quadrature.weights[i] * r.quadrature.nodes[i];
+    }
+    CHECK(double(sum) == doctest::Approx(m[0]).epsilon(1e-14));
+    CHECK(double(first) == doctest::Approx(m[1]).epsilon(1e-14));
+  }
+}
+
+// Found by fuzz/moment_inversion_fuzzer: on the real line a one-node rule tests no β, and the
+// boundary distance min β_k/(m_2/m_0) was 0/0 for a Dirac at 0 (particles at rest), where the
+// contract says 1 for a single node.
+TEST_CASE("a Dirac at 0 on the real line: one node at 0, boundary distance 1, never NaN") {
+  const std::array<double, 2> one{0.4, 0};
+  const auto single = invert<1>(one, {.support = Support::real_line});
+  CHECK(single.status == InversionStatus::ok);
+  CHECK(single.boundary_distance == 1);
+  const std::array<double, 4> rest{0.4, 0, 0, 0};
+  for (RecurrenceAlgorithm alg : algorithms) {
+    INFO(name(alg));
+    const auto r = invert<2>(rest, {.algorithm = alg, .support = Support::real_line});
+    CHECK(r.status == InversionStatus::reduced);
+    REQUIRE(r.quadrature.size == 1);
+    CHECK(r.quadrature.nodes[0] == 0);
+    CHECK(r.quadrature.weights[0] == 0.4);
+    CHECK(r.boundary_distance == 1);
+  }
 }

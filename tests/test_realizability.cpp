@@ -196,6 +196,15 @@ TEST_CASE("real line: zero-mean sets, a Dirac at a negative position, the a = 0 
   CHECK(d.first_failing_index == 1);
   CHECK(d.failing_value == 0);
   CHECK(d.recurrence.alpha[0] == -2);
+  // A Dirac at 0 (particles at rest): one node, no β tested, boundary distance 1 — it was
+  // 0/0 = NaN, m_2/m_0 being 0 (found by fuzz/moment_inversion_fuzzer).
+  const std::vector<double> rest{0.4, 0, 0, 0};
+  for (std::size_t count : {2, 3, 4}) {
+    INFO("count " << count);
+    const auto a = report(rest, count, Support::real_line);
+    CHECK(a.realizable_nodes == 1);
+    CHECK(a.boundary_distance == 1);
+  }
 }
 
 TEST_CASE("degenerate and invalid inputs: a defined report with a status, never a NaN without one") {

@@ -192,7 +192,7 @@ FLUIDBED_HOST_DEVICE bool gauss_radau_rule(const ScaledAnalysis<T, N>& analysis,
   q.nodes[nearest] = fixed;
   unscale(q, analysis.scaling);
   for (int i = 0; i < q.size; ++i)
-    if (!(q.weights[i] > T(0)) || !isfinite(q.weights[i]) ||
+    if (!(q.weights[i] > T(0)) || !isfinite(q.weights[i]) || !isfinite(q.nodes[i]) ||
         (options.support == Support::positive_half_line && q.nodes[i] < T(0))) {
       q.size = 0;
       return false;

@@ -8,7 +8,7 @@
 // every arithmetic operation, square root included, is a SIMD operation at the default
 // flags — compilers do not vectorize std::sqrt while math-errno is on), and every step runs
 // the same operations on all lanes:
-//   1. exact power-of-two scaling, by bit operations on the exponents (no frexp/ldexp);
+//   1. exact power-of-two scaling, the exponents read from the moments' exponent fields;
 //   2. Wheeler's recurrence: detail::wheeler_levels, the kernel wheeler_unscaled() runs per cell;
 //   3. realizability (every β_k > 0; on [0, ∞) every ζ_j > 0) as a per-cell mask;
 //   4. nodes and weights: the closed forms of jacobi_eigen.hpp for n <= 2, the fixed-cost
@@ -26,10 +26,8 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <span>
@@ -128,59 +126,25 @@ struct LaneScales {
   V weight, inverse_weight, length, inverse_length;
 };
 
-// weight = 2^floor(log2 m_0); length = 2^floor(log2(m_1/m_0)) or, on the real line when the
-// mean is not a positive normal number, 2^floor(log2(m_2/m_0)/2) (the choices of scaling_of,
-// rounded down instead of to nearest). Any power of two serves: every step of the pipeline
-// commutes exactly with a power-of-two change of units. For IEEE types the powers are read
-// from and written into the exponent field; other types use scaling_of and ldexp. The guards
-// require m_0, the ratio the length comes from, the scales and their inverses to be normal
-// numbers.
-template <Support support, class V>
-LaneScales<V> lane_scales(const V& m0, const V& m1, const V& m2, LaneGuards<V>& guards) {
+// The scales of scaling_of (recurrence.hpp), per cell: it reads them from the exponent fields
+// of m_0, m_1 and m_2 (given: `second`), a few integer operations. The guards require m_0, the
+// scales and their inverses to be normal numbers.
+template <class V>
+LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<V>& guards) {
   using T = typename V::Scalar;
+  using std::isfinite;
   constexpr int L = int(V::SizeAtCompileTime);
   LaneScales<V> s;
-  if constexpr (has_binary_layout<T>) {
-    using bits = layout_bits<T>;
-    constexpr int shift = std::numeric_limits<T>::digits - 1;
-    constexpr bits bias = bits(std::numeric_limits<T>::max_exponent - 1);
-    constexpr bits exponent_mask = (2 * bias + 1) << shift;
-    // 2^e with e the exponent of x, and 2^−e: their biased exponents sum to twice the bias.
-    const auto below = [&](const V& x, V& power, V& inverse) {
-      for (int i = 0; i < L; ++i) {
-        const bits exponent = std::bit_cast<bits>(x[i]) & exponent_mask;
-        power[i] = std::bit_cast<T>(exponent);
-        inverse[i] = std::bit_cast<T>((2 * bias << shift) - exponent);
-      }
-    };
-    const V mean = m1 / m0;
-    below(m0, s.weight, s.inverse_weight);
-    below(mean, s.length, s.inverse_length);
-    if constexpr (support == Support::real_line) {
-      // 2^floor(e/2) for m_2/m_0 = 2^e·f: biased exponent ⌊(E + bias)/2⌋.
-      const V second = m2 / m0;
-      V root, inverse_root;
-      for (int i = 0; i < L; ++i) {
-        const bits half = (((std::bit_cast<bits>(second[i]) & exponent_mask) >> shift) + bias) >> 1;
-        root[i] = std::bit_cast<T>(half << shift);
-        inverse_root[i] = std::bit_cast<T>((2 * bias - half) << shift);
-      }
-      const auto use_mean = mean >= std::numeric_limits<T>::min() && mean <= std::numeric_limits<T>::max();
-      s.length = use_mean.select(s.length, root);
-      s.inverse_length = use_mean.select(s.inverse_length, inverse_root);
-      guards.require_normal(use_mean.select(mean, second));
-    } else {
-      guards.require_normal(mean);  // else not realizable on [0, ∞): the per-cell path says so
-    }
-  } else {
-    for (int i = 0; i < L; ++i) {
-      const T m[3] = {m0[i], m1[i], m2[i]};
-      const MomentScaling e = m0[i] > T(0) ? scaling_of(std::span<const T>(m, 3)) : MomentScaling{};
-      s.weight[i] = power_of_two<T>(e.weight_exponent);
-      s.inverse_weight[i] = power_of_two<T>(-e.weight_exponent);
-      s.length[i] = power_of_two<T>(e.length_exponent);
-      s.inverse_length[i] = power_of_two<T>(-e.length_exponent);
-    }
+  for (int i = 0; i < L; ++i) {
+    const T m[3] = {m0[i], m1[i], second ? (*second)[i] : T(0)};
+    const std::size_t count = second ? 3 : 2;
+    bool usable = m0[i] > T(0);
+    for (std::size_t k = 0; k < count; ++k) usable = usable && isfinite(m[k]);
+    const MomentScaling e = usable ? scaling_of(std::span<const T>(m, count)) : MomentScaling{};
+    s.weight[i] = power_of_two<T>(e.weight_exponent);
+    s.inverse_weight[i] = power_of_two<T>(-e.weight_exponent);
+    s.length[i] = power_of_two<T>(e.length_exponent);
+    s.inverse_length[i] = power_of_two<T>(-e.length_exponent);
   }
   for (const V* x : std::initializer_list<const V*>{&m0, &s.weight, &s.inverse_weight, &s.length, &s.inverse_length})
     guards.require_normal(*x);
@@ -196,7 +160,7 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
   for (int k = 0; k < 2 * N; ++k) guards.require_finite(m[k]);
   // 1. Exact scaling: the factors 2^−(a + k b) by repeated exact products, all normal if the
   // last one is (they are monotonic in k and the first one is checked by lane_scales).
-  const LaneScales<V> s = lane_scales<support>(m[0], m[1], m[2 % (2 * N)], guards);
+  const LaneScales<V> s = lane_scales(m[0], m[1], N >= 2 ? &m[2 % (2 * N)] : nullptr, guards);
   V scaled[2 * N];
   V factor = s.inverse_weight;
   for (int k = 0; k < 2 * N; ++k) {
@@ -204,6 +168,8 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
     if (k + 1 < 2 * N) factor *= s.inverse_length;
   }
   guards.require_normal(factor);
+  // m̃_1 a normal number unless m_1 = 0 (detail::scaled_moments_in_range).
+  guards.require_normal((m[1] == T(0)).select(V::Constant(T(1)), scaled[1].abs()));
   // 2. Recurrence.
   V alpha[N], beta[N];
   wheeler_levels<V, N>(scaled, N, alpha, beta);
@@ -223,6 +189,7 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
   }
   // 4. Nodes and weights of the scaled recurrence.
   if constexpr (N == 3) {
+    guards.require_positive(three_node_spread_margin(alpha, beta));  // else the QL, per cell
     gauss_three_nodes(alpha, beta, x, w);
   } else {
     for (int k = 0; k < N; ++k) {

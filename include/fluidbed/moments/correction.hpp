@@ -57,6 +57,16 @@
 //     exists; the set becomes the monodisperse M_k = M_0 r^k, r = M_1/M_0 (all the solids at
 //     the mean size d43, M_0 and M_1 kept). M_1 <= 0 (no size scale), m_0 <= 0, NaN or ±∞:
 //     nothing can be corrected (status failed, moments returned as given).
+//   * A correction is reported only if every moment it returns is finite and > 0. McGraw's
+//     factor c = exp(ln c) over- or underflows where a moment was corrupted by more than the
+//     range (M_2 = 8e-323 in a set in SI units): mcgraw_correct then fails, and correct_moments
+//     goes on to the fallback from the set as given. The fallback's M_0 r^k q^{k(k−1)/2}
+//     overflows for a broad set at high k, underflows for small sizes in float, and is NaN where
+//     r or q are not normal numbers (a set spanning the whole range): status failed then too,
+//     the moments as given — no other correction is attempted, since none shares M_0 … M_2. So
+//     is a fill whose moments are finite and positive but span more than the range once
+//     exactly scaled (realizability(): invalid_input; a broad log-normal in float), which no
+//     inversion could use.
 // Only sizes ([0, ∞)) are corrected: the logarithms and the fallback need positive moments.
 #pragma once
 
@@ -78,7 +88,8 @@ enum class CorrectionStatus {
   lognormal,     // replaced above M_2 by the log-normal sharing M_0, M_1, M_2
   monodisperse,  // M_0 M_2 < M_1²: replaced by M_0 r^k (M_0, M_1 kept)
   zero_mass,     // every moment 0 (an empty cell): nothing to correct
-  failed,        // NaN/±∞, m_0 <= 0 or m_1 <= 0: not correctable, moments returned as given
+  failed,        // NaN/±∞, m_0 <= 0 or m_1 <= 0, or no correction with finite positive moments
+                 // (beyond the range of T): not correctable, moments returned as given
 };
 
 template <class T>
@@ -179,10 +190,22 @@ FLUIDBED_HOST_DEVICE bool start_correction(std::span<const T> m, CorrectionResul
   return out.status == CorrectionStatus::unchanged;
 }
 
-// McGraw's iterations on out.moments (all > 0, size >= 6) until ln m_k is convex.
+// Gives up a correction whose moments T cannot represent: the moments as given, status failed
+// (realizable_moments left to the caller).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE void run_mcgraw(CorrectionResult<T, N>& out, int protected_moments, int max_iterations) {
+FLUIDBED_HOST_DEVICE void give_up(std::span<const T> m, CorrectionResult<T, N>& out) {
+  out = CorrectionResult<T, N>{};
+  start_correction(m, out);
+  out.status = CorrectionStatus::failed;
+}
+
+// McGraw's iterations on out.moments (all > 0, size >= 6) until ln m_k is convex. Returns false,
+// out.moments part-way, if a step would make a moment ±∞ or 0: ln c is computed on the scaled
+// logarithms and is fine, but c = exp(ln c) applied to the moment in the caller's units is not.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE bool run_mcgraw(CorrectionResult<T, N>& out, int protected_moments, int max_iterations) {
   using std::exp;
+  using std::isfinite;
   using std::log;
   const int L = out.size;
   const std::span<const T> view(out.moments.data(), std::size_t(L));
@@ -196,18 +219,22 @@ FLUIDBED_HOST_DEVICE void run_mcgraw(CorrectionResult<T, N>& out, int protected_
     const int k = mcgraw_step<T, N>(l, L, first, ln_c);
     if (k < 0) break;
     const T factor = exp(ln_c);
-    out.moments[k] *= factor;
+    const T moment = out.moments[k] * factor;
+    if (!(isfinite(moment) && moment > T(0))) return false;
+    out.moments[k] = moment;
     out.ratio[k] *= factor;
     out.changed[k] = true;
     ++out.iterations;
   }
+  return true;
 }
 
 }  // namespace detail
 
 // McGraw's iterations alone (step 1 above), until ln m_k is convex or max_iterations: status
 // mcgraw if it changed something, unchanged if the set was convex (or L < 6, or a moment <= 0),
-// zero_mass or failed for such inputs. Realizability is reported, not enforced.
+// zero_mass or failed for such inputs, failed (moments as given) if a step leaves the range of
+// T. Realizability is reported, not enforced.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE CorrectionResult<T, N> mcgraw_correct(std::span<const T> m, const CorrectionOptions<T>& options = {}) {
   FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
@@ -215,18 +242,23 @@ FLUIDBED_HOST_DEVICE CorrectionResult<T, N> mcgraw_correct(std::span<const T> m,
   if (!detail::start_correction(m, out)) return out;
   bool positive = true;
   for (int k = 0; k < out.size; ++k) positive = positive && m[k] > T(0);
-  if (positive && out.size >= 6) detail::run_mcgraw(out, options.protected_moments, options.max_iterations);
-  if (out.iterations > 0) out.status = CorrectionStatus::mcgraw;
+  if (positive && out.size >= 6 && !detail::run_mcgraw(out, options.protected_moments, options.max_iterations))
+    detail::give_up(m, out);
+  else if (out.iterations > 0)
+    out.status = CorrectionStatus::mcgraw;
   out.realizable_moments =
       realizability<T, N>(std::span<const T>(out.moments.data(), m.size())).realizable_moments;
   return out;
 }
 
-// The full correction of seed 003 (steps 1–3 above, with the decisions listed there).
+// The full correction of seed 003 (steps 1–3 above, with the decisions listed there; a McGraw
+// step beyond the range of T hands the set as given to the fallback, a fallback beyond it gives
+// status failed with the moments as given).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE CorrectionResult<T, N> correct_moments(std::span<const T> m,
                                                             const CorrectionOptions<T>& options = {}) {
   using std::exp;
+  using std::isfinite;
   using std::log;
   FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
   CorrectionResult<T, N> out;
@@ -235,7 +267,7 @@ FLUIDBED_HOST_DEVICE CorrectionResult<T, N> correct_moments(std::span<const T> m
   out.realizable_moments = given.realizable_moments;
   if (given.status == InversionStatus::ok || detail::on_boundary(given, options.degenerate_tolerance)) return out;
 
-  out = mcgraw_correct<T, N>(m, options);
+  out = mcgraw_correct<T, N>(m, options);  // failed here only for a step beyond the range: m as given
   if (out.iterations > 0) {
     const RealizabilityReport<T, N> after = realizability<T, N>(std::span<const T>(out.moments.data(), m.size()));
     if (after.status == InversionStatus::ok || detail::on_boundary(after, options.degenerate_tolerance)) return out;
@@ -249,14 +281,26 @@ FLUIDBED_HOST_DEVICE CorrectionResult<T, N> correct_moments(std::span<const T> m
       lognormal ? lognormal_matching(low[0], low[1], low[2]) : LognormalParameters<T>{log(low[1] / low[0]), T(0)};
   lognormal_moments(low[0], p, std::span<T>(out.moments.data(), std::size_t(L)));
   const int kept = lognormal ? 3 : 2;
+  bool representable = true;
   for (int k = 0; k < L; ++k) {
     if (k < kept) out.moments[k] = low[k];  // exactly, not through exp(ln ·)
+    representable = representable && isfinite(out.moments[k]) && out.moments[k] > T(0);
     out.changed[k] = out.changed[k] || k >= kept;
     out.ratio[k] = out.moments[k] / m[k];
   }
+  // Finite positive moments can still span more than the range once scaled (a broad log-normal
+  // in float): the inversion could not use them, realizability() says invalid_input. (Moments
+  // that are not finite and positive are not analysed: the default report says invalid_input.)
+  const RealizabilityReport<T, N> filled = representable
+                                               ? realizability<T, N>(std::span<const T>(out.moments.data(), m.size()))
+                                               : RealizabilityReport<T, N>{};
+  if (filled.status == InversionStatus::invalid_input) {
+    detail::give_up(m, out);
+    out.realizable_moments = given.realizable_moments;
+    return out;
+  }
   out.status = lognormal ? CorrectionStatus::lognormal : CorrectionStatus::monodisperse;
-  out.realizable_moments =
-      realizability<T, N>(std::span<const T>(out.moments.data(), m.size())).realizable_moments;
+  out.realizable_moments = filled.realizable_moments;
   return out;
 }
 

@@ -32,7 +32,8 @@
 namespace fluidbed::moments {
 
 enum class EigenSolver {
-  automatic,    // closed forms for n <= 2, the fixed-cost three-node solver for n = 3, QL above
+  automatic,    // closed forms for n <= 2, the fixed-cost three-node solver for n = 3 (within
+                // detail::three_node_spread_limit, jacobi_eigen.hpp), QL otherwise
   golub_welsch  // QL for every n (the reference path for the others)
 };
 
@@ -73,7 +74,6 @@ namespace detail {
 template <class T, int N, class Solve>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, const InversionOptions& options,
                                                         Solve&& solve) {
-  using std::isfinite;
   FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
   InversionResult<T, N> out;
   const int requested = int(m.size() / 2);
@@ -85,13 +85,10 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
   const MomentScaling s = scaling_of(m);
   T scaled[2 * N];
   scale_moments(m, s, std::span<T>(scaled, m.size()));
-  // A set spanning more than the floating-point range (a subnormal m_0 with ordinary higher
-  // moments: its mean overflows) cannot be brought to O(1): reported, never inverted.
-  for (std::size_t k = 0; k < m.size(); ++k)
-    if (!isfinite(scaled[k])) {
-      out.status = InversionStatus::invalid_input;
-      return out;
-    }
+  if (!scaled_moments_in_range(m, std::span<const T>(scaled, m.size()))) {
+    out.status = InversionStatus::invalid_input;
+    return out;
+  }
   out.status = InversionStatus::not_realizable;
   const std::span<const T> view(scaled, m.size());
   Recurrence<T, N> r = options.algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
@@ -99,14 +96,20 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
   assess(r, requested, options.support, s, out);
   out.realizable_nodes = r.size;
   if (r.size == 0) return out;  // not_realizable (e.g. a negative mean on [0, ∞))
-  // A solver that cannot represent the rule (a spread of nodes beyond the floating-point
-  // range) says so by a status, never by a NaN under ok.
+  // A rule that cannot be represented is a status, never a NaN or an infinity under ok: a
+  // spread of nodes beyond the floating-point range in scaled units (eigen_failure), or a node
+  // or weight beyond it in the caller's (invalid_input: the set spans more than the range).
   if (!solve(static_cast<const Recurrence<T, N>&>(r), out.quadrature) || !finite_rule(out.quadrature)) {
-    out.quadrature.size = 0;
+    out.quadrature = {};
     out.status = InversionStatus::eigen_failure;
     return out;
   }
   unscale(out.quadrature, s);
+  if (!finite_rule(out.quadrature)) {
+    out.quadrature = {};
+    out.status = InversionStatus::invalid_input;
+    return out;
+  }
   out.status = r.size == requested ? InversionStatus::ok : InversionStatus::reduced;
   return out;
 }
@@ -124,11 +127,9 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const In
         return true;
       }
       if constexpr (N >= 3)
-        if (r.size == 3) {
-          // The closed form squares the spread of the nodes: beyond ~1e19 (double) relative to
-          // the scaled mean it overflows (found by fuzz/), where the QL below does not.
+        if (r.size == 3 && detail::three_node_closed_form_suits(r)) {
           q = gauss_three_nodes(r);
-          if (detail::finite_rule(q)) return true;
+          if (detail::finite_rule(q)) return true;  // (a β underflowed in the adjugate: the QL)
         }
     }
     return gauss_golub_welsch(r, q);

@@ -42,9 +42,12 @@ FLUIDBED_HOST_DEVICE void sort_nodes(Quadrature<T, N>& q) {
 
 }  // namespace detail
 
-// Closed forms for n = 1 and 2 (r.size <= 2). For n = 2, with c = (α_0 + α_1)/2,
-// h = (α_1 − α_0)/2 and ρ = √(h² + β_1): x = c ∓ ρ, and the weights in the Christoffel form
-// w_i = m_0 β_1 / (β_1 + (x_i − α_0)²), which has no cancellation (the textbook
+// Closed forms for n = 1 and 2 (r.size <= 2). For n = 2 the nodes are x = α_0 + y with
+// y² − 2hy − β_1 = 0, h = (α_1 − α_0)/2: the root away from α_0, y_far = h + sign(h)√(h² + β_1),
+// has no cancellation, and the other follows from y_near y_far = −β_1 (Vieta). (The textbook
+// c ∓ √(h² + β_1), c = (α_0 + α_1)/2, cancels for the node near α_0 when the other is far: off
+// by ε|x_far|, 2.8e-10 at 0.1 beside −5.9e6, found by fuzz/.) The weights in the Christoffel
+// form w_i = m_0 β_1/(β_1 + y_i²), on those y, have no cancellation either (the textbook
 // (m_0 x_2 − m_1)/(x_2 − x_1) loses the small weight of a skewed pair).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& r) {
@@ -56,14 +59,14 @@ FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& 
     q.nodes[0] = r.alpha[0];
     q.weights[0] = r.beta[0];
   } else if (r.size == 2) {
-    const T centre = (r.alpha[0] + r.alpha[1]) / T(2);
-    const T half_gap = (r.alpha[1] - r.alpha[0]) / T(2);
-    const T radius = sqrt(half_gap * half_gap + r.beta[1]);
-    q.nodes[0] = centre - radius;
-    q.nodes[1] = centre + radius;
+    const T h = (r.alpha[1] - r.alpha[0]) / T(2);
+    const T radius = sqrt(h * h + r.beta[1]);
+    const T far = h < T(0) ? h - radius : h + radius;
+    const T near = -r.beta[1] / far;
+    const T y[2] = {h < T(0) ? far : near, h < T(0) ? near : far};  // ascending
     for (int i = 0; i < 2; ++i) {
-      const T d = q.nodes[i] - r.alpha[0];
-      q.weights[i] = r.beta[0] * r.beta[1] / (r.beta[1] + d * d);
+      q.nodes[i] = r.alpha[0] + y[i];
+      q.weights[i] = r.beta[0] * r.beta[1] / (r.beta[1] + y[i] * y[i]);
     }
   }
   return q;
@@ -151,6 +154,44 @@ constexpr int halley_steps(int digits) {
   int steps = 0;
   for (int bits = 8; bits < digits + 2; bits *= 3) ++steps;
   return steps;
+}
+
+}  // namespace detail
+
+// Where the three-node solver below is as accurate as the QL: while the spread of the nodes,
+// √p = √(tr B²/6), is within three_node_spread_limit of their rms √(m_2/m_0) = √(α_0² + β_1).
+// Measured on 300 000 random three-atom sets per precision (nodes and weights log-uniform over
+// up to 16 decades, both supports) against a long-double QL of the same recurrence: both solvers
+// err by ~ε·(√p/rms)·rms in the nodes up to ratios ~3e5 (float) and ~3e7 (double); beyond, the
+// eigenvector of the extreme node (from the adjugate) no longer resolves the other two and the
+// closed form breaks down (nodes off by 1e6 rms in float at 3e5, where the QL is off by 0.5).
+// A margin > 0 selects the closed form; the limit, 1e3, keeps two decades from the breakdown
+// in float and lets every size distribution of practical breadth through (log-normal σ <= 1.5:
+// ratio < 30).
+namespace detail {
+
+template <class T>
+FLUIDBED_HOST_DEVICE T three_node_spread_limit() {
+  return T(1000);
+}
+
+// limit² (α_0² + β_1) − p for a three-node recurrence, on a scalar or a lane of cells.
+template <class V>
+FLUIDBED_HOST_DEVICE V three_node_spread_margin(const V (&alpha)[3], const V (&beta)[3]) {
+  using T = typename lane_ops<V>::scalar;
+  const V mu = (alpha[0] + alpha[1] + alpha[2]) * (T(1) / T(3));
+  const V d0 = alpha[0] - mu, d1 = alpha[1] - mu, d2 = alpha[2] - mu;
+  const V p = (d0 * d0 + d1 * d1 + d2 * d2 + T(2) * (beta[1] + beta[2])) * (T(1) / T(6));
+  const T limit = three_node_spread_limit<T>();
+  return limit * limit * (alpha[0] * alpha[0] + beta[1]) - p;
+}
+
+// Whether the three-node solver suits a recurrence with r.size == 3 (see three_node_spread_limit).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE bool three_node_closed_form_suits(const Recurrence<T, N>& r) {
+  const T alpha[3] = {r.alpha[0], r.alpha[1], r.alpha[2]};
+  const T beta[3] = {r.beta[0], r.beta[1], r.beta[2]};
+  return three_node_spread_margin(alpha, beta) > T(0);
 }
 
 }  // namespace detail
@@ -250,7 +291,8 @@ FLUIDBED_HOST_DEVICE void gauss_three_nodes(const V (&alpha)[3], const V (&beta)
   weights[2] = ops::choose(s, extreme_weight, high_weight);
 }
 
-// The same for one cell: a recurrence with r.size == 3 (β_1, β_2 > 0).
+// The same for one cell: a recurrence with r.size == 3 (β_1, β_2 > 0). invert() calls it only
+// within detail::three_node_spread_limit, the QL beyond.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_three_nodes(const Recurrence<T, N>& r) {
   static_assert(N >= 3);

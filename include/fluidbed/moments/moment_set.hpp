@@ -13,10 +13,10 @@
 #pragma once
 
 #include <array>
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <span>
-
-#include <boost/math/constants/constants.hpp>
+#include <sstream>
 
 #include "../core/config.hpp"
 #include "../core/errors.hpp"
@@ -140,8 +140,9 @@ FLUIDBED_HOST_DEVICE T sieve_sum(const SieveAnalysis<T>& psd, int k) {
 // i.e. bin volume fractions ω_i = ν_i⟨ξ³⟩_i/Σ_j ν_j⟨ξ³⟩_j with a VDF ∝ ξ³ inside each bin. Feeding
 // those ω_i to E.7 instead would differ at second order in the bin width.
 // Preconditions (checked by sieve_moment_checked): edges.size() == fractions.size() + 1 >= 2,
-// edges strictly increasing and >= 0, fractions >= 0 with a positive sum, 0 < ε <= 1, and
-// edges[0] > 0 if k < 0 (else the result is +∞).
+// edges strictly increasing and >= 0, fractions >= 0 with a positive sum, 0 < ε <= 1,
+// edges[0] > 0 if k < 0 (else the result is +∞), and M_k within the range of T (edges whose
+// powers overflow give ±∞ or NaN: sieve_moment_checked rejects them; below the range, 0).
 template <class T>
 FLUIDBED_HOST_DEVICE T sieve_moment(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   FLUIDBED_EXPECTS(psd.edges.size() == psd.fractions.size() + 1 && !psd.fractions.empty());
@@ -155,7 +156,10 @@ FLUIDBED_HOST_DEVICE void sieve_moments(const SieveAnalysis<T>& psd, const T& vo
 }
 
 // sieve_moment with its preconditions validated: throws std::domain_error naming the
-// offending argument.
+// offending argument. It also throws, naming k, when the moment itself is beyond the range of T:
+// the powers of the edges (or the sums of the fractions) overflow, and the result would be ±∞ or
+// NaN. A moment below the range underflows to 0 (or a subnormal) as any product does, in the
+// hot path and here alike: float in SI units gives M_k = 0 from k ~ 12.
 template <class T>
 T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   constexpr const char* function = "moments::sieve_moment";
@@ -175,7 +179,15 @@ T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   }
   require_positive(function, "sum of fractions", total);
   require_in_half_open(function, "voidage", voidage, T(0), T(1));
-  return sieve_moment(psd, voidage, k);
+  const T moment = sieve_moment(psd, voidage, k);
+  if (!fluidbed::detail::is_finite_number(moment)) {
+    std::ostringstream requirement;
+    requirement.precision(17);
+    requirement << "M_k of these edges and fractions evaluates to " << moment
+                << ": beyond the range of the floating type";
+    fluidbed::detail::throw_domain_error(function, "k", k, requirement.str());
+  }
+  return moment;
 }
 
 // Geldart's estimate of the Sauter diameter from sieve data, seed 000 eq. 6.1:

@@ -32,10 +32,12 @@ enum class InversionStatus {
   zero_mass,       // m_0 = 0 and every moment 0: an empty cell, no nodes
   not_realizable,  // not even one node: m_0 < 0, or moments of an empty cell nonzero, or the mean
                    // outside the support
-  invalid_input,   // a moment is NaN or infinite
-  eigen_failure,   // the QL iteration did not converge, or the rule is not representable (nodes
-                   // spread beyond the floating-point range); never observed for size
-                   // distributions; no nodes
+  invalid_input,   // a moment is NaN or infinite, or the set spans more than the floating-point
+                   // range: its exactly scaled moments (recurrence.hpp), or its nodes, weights or
+                   // coefficients in the caller's units, overflow
+  eigen_failure,   // the QL iteration did not converge, or the rule is not representable in
+                   // scaled units (nodes spread beyond the floating-point range); never observed
+                   // for size distributions; no nodes
 };
 
 template <class T, int N>
@@ -43,8 +45,9 @@ struct InversionResult {
   Quadrature<T, N> quadrature;  // nodes ascending, weights; quadrature.size nodes
   InversionStatus status = InversionStatus::invalid_input;
   int realizable_nodes = 0;      // nodes the set supports (= quadrature.size unless eigen_failure)
-  // The first coefficient that fails: j for ζ_j <= 0 ([0, ∞), 1-based) or k for β_k <= 0 (real
-  // line), with its value in the caller's units; 0 and 0 when every tested coefficient passes.
+  // The first coefficient that fails: j for ζ_j <= 0 or not finite ([0, ∞), 1-based), or k for
+  // β_k <= 0 or α_k not finite (real line), with its value in the caller's units; 0 and 0 when
+  // every tested coefficient passes.
   int first_failing_index = 0;
   T failing_value = T(0);
   // How far inside moment space the retained coefficients lie, relative: min_j ζ_j/ζ_1 over
@@ -90,20 +93,35 @@ FLUIDBED_HOST_DEVICE CoefficientScan<T, N> scan_coefficients(const Recurrence<T,
         out.realizable_moments = j;
         break;
       }
-  } else if (r.size < levels && 2 * r.size < moment_count) {
-    out.first_failing_index = r.size;
-    out.failing_value = r.beta[r.size];
-    out.realizable_moments = 2 * r.size;
+  } else {
+    // Wheeler's stop test sees β only; an α_k that over- or underflowed (a last moment corrupted
+    // to 0: σ_{k,k} ≈ 0) ends the set at m_{2k} as ζ_{2k+1} does on [0, ∞).
+    for (int k = 1; k < r.size && 2 * k + 1 < moment_count; ++k)  // α_0 = m̃_1/m̃_0 is finite
+      if (!isfinite(r.alpha[k])) {
+        out.first_failing_index = k;
+        out.failing_value = r.alpha[k];
+        out.realizable_moments = 2 * k + 1;
+        return out;
+      }
+    if (r.size < levels && 2 * r.size < moment_count) {
+      out.first_failing_index = r.size;
+      out.failing_value = r.beta[r.size];
+      out.realizable_moments = 2 * r.size;
+    }
   }
   return out;
 }
 
 // The relative boundary distance of a rule built from m_0 … m_{moments−1} (see
-// InversionResult): over ζ_2 … ζ_{moments−1} ([0, ∞)) or β_1 … β_{⌊(moments−1)/2⌋} (real line).
+// InversionResult): over ζ_2 … ζ_{moments−1} ([0, ∞)) or β_1 … β_{⌊(moments−1)/2⌋} (real line);
+// 0 without a node. One node from m_0, m_1 tests no coefficient and is at distance 1 by
+// definition: returned as such, since the ratio would be 0/0 for a Dirac at 0 on the real line
+// (m_2/m_0 = α_0² = 0: particles at rest).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T boundary_distance(const Recurrence<T, N>& r, const std::array<T, 2 * N>& zeta, int moments,
                                          Support support) {
   if (moments < 2) return T(0);
+  if (moments == 2) return T(1);
   // The smallest coefficient first, one division at the end.
   if (support == Support::positive_half_line) {
     T smallest = zeta[0];
@@ -149,9 +167,9 @@ struct ScaledAnalysis {
   CoefficientScan<T, N> scan;
 };
 
-// The statuses the input alone decides: invalid_input (a moment NaN or infinite), zero_mass
-// (every moment 0: an empty cell), not_realizable (m_0 <= 0, or an empty cell with nonzero
-// higher moments); ok otherwise (m_0 > 0 and every moment finite).
+// The statuses the input alone decides, before scaling: invalid_input (a moment NaN or
+// infinite), zero_mass (every moment 0: an empty cell), not_realizable (m_0 <= 0, or an empty
+// cell with nonzero higher moments); ok otherwise (m_0 > 0 and every moment finite).
 template <class T>
 FLUIDBED_HOST_DEVICE InversionStatus input_status(std::span<const T> m) {
   using std::isfinite;
@@ -177,6 +195,10 @@ FLUIDBED_HOST_DEVICE ScaledAnalysis<T, N> analyse(std::span<const T> m, Support 
   a.scaling = scaling_of(m);
   T scaled[2 * N]{};
   scale_moments(m, a.scaling, std::span<T>(scaled, m.size()));
+  if (!scaled_moments_in_range(m, std::span<const T>(scaled, m.size()))) {
+    a.status = InversionStatus::invalid_input;
+    return a;
+  }
   if (count == 1) {  // m_0 > 0 alone: realizable, no node
     a.recurrence.beta[0] = scaled[0];
     a.scan.realizable_moments = 1;
@@ -209,17 +231,20 @@ template <class T, int N>
 struct RealizabilityReport {
   // ok: the whole set is realizable; reduced: a proper prefix with >= 1 node is; zero_mass,
   // not_realizable (m_0 <= 0 with nonzero moments, or not even m_0, m_1: e.g. a mean <= 0 on
-  // [0, ∞)), invalid_input (NaN or ±∞).
+  // [0, ∞)), invalid_input (NaN or ±∞, or a set spanning more than the range: its scaled
+  // moments, or its recurrence in the caller's units, overflow; nothing else is filled then).
   InversionStatus status = InversionStatus::invalid_input;
   int realizable_moments = 0;   // R: m_0 … m_{R−1} is strictly inside moment space
   int realizable_nodes = 0;     // ⌊R/2⌋, the Gauss nodes the set supports
-  int first_failing_index = 0;  // j for ζ_j <= 0 ([0, ∞)), k for β_k <= 0 (real line); 0: none
+  int first_failing_index = 0;  // j for ζ_j <= 0 ([0, ∞)), k for β_k <= 0 or α_k ±∞ (real line); 0: none
   T failing_value = T(0);       // that coefficient (m_0 itself when m_0 <= 0)
   // α_k, β_k of the realizable_nodes levels (beta[0] = m_0).
   Recurrence<T, N> recurrence;
   // ζ_1 … ζ_zeta_count (zeta[j − 1] = ζ_j), up to and including the first failing one (Wheeler
   // stops at the first β_k <= 0; a ζ_{2k+1} <= 0 with β_{k+1} > 0 lets it go on, and the later
   // ζ are then listed too). On the real line with m_1 = 0 the ζ are not finite (ζ_2 = β_1/0).
+  // Computed in scaled units, hence +∞ (as IEEE rounds an overflow) where a ζ lies beyond the
+  // range in the caller's: the status and counts, decided in scaled units, stand.
   std::array<T, 2 * N> zeta{};
   int zeta_count = 0;
   T boundary_distance = T(0);  // as InversionResult::boundary_distance, over the realizable moments
@@ -247,6 +272,21 @@ struct RealizabilityReport {
   bool hankel_positive = false;  // every tested determinant among the hankel_count is > 0
 };
 
+namespace detail {
+
+// Whether the recurrence of a report is finite in the caller's units: a realizable set whose
+// mean or variance lies beyond the floating-point range ({2e-139, 3.7e210, 1, …}) has it
+// finite only in scaled units. (The ζ are diagnostics, ±∞ there where beyond the range.)
+template <class T, int N>
+FLUIDBED_HOST_DEVICE bool representable(const Recurrence<T, N>& r) {
+  using std::isfinite;
+  for (int k = 0; k < r.size; ++k)
+    if (!isfinite(r.alpha[k]) || !isfinite(r.beta[k])) return false;
+  return true;
+}
+
+}  // namespace detail
+
 // The realizability test of m_0 … m_{size−1}, 1 <= size <= 2N, on the support. Reuses the
 // recurrence of recurrence.hpp (Wheeler on exactly scaled moments); no threshold.
 template <class T, int N>
@@ -271,6 +311,7 @@ FLUIDBED_HOST_DEVICE RealizabilityReport<T, N> realizability(std::span<const T> 
   out.recurrence.beta[0] = m[0];  // also when no level is realizable
   out.zeta_count = a.scan.zeta_count;
   for (int j = 0; j < out.zeta_count; ++j) out.zeta[std::size_t(j)] = ldexp(a.scan.zeta[std::size_t(j)], b);
+  if (!detail::representable(out.recurrence)) return RealizabilityReport<T, N>{};  // invalid_input
 
   const int count = int(m.size());
   T scaled[2 * N]{};

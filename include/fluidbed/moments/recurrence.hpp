@@ -103,26 +103,49 @@ FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
 }  // namespace detail
 
 // The scaling that brings m_0 and the length scale of the set to O(1). The length scale is
-// m_1/m_0 when positive, else √(m_2/m_0) (zero-mean sets), else 1. Preconditions: m has at
-// least 1 element and m_0 > 0 finite (the callers check; see inversion.hpp).
+// the larger of |m_1|/m_0 and √(m_2/m_0) (for a realizable set on either support the latter,
+// which keeps m̃_2 = 1 and every m̃_k, k >= 2, >= 1 on [0, ∞): the mean alone would put a
+// broad set's high moments, or a real-line set with a tiny mean, out of range), 1 without
+// either. It is read from the exponents of the moments, never from their ratios, which over-
+// or underflow for sets spanning the range ({2.9e61, 2.8e-279, 5.6e-188}); so a change of
+// units by powers of two changes it by exactly those powers. Any power of two near the
+// length scale serves: every step of the pipeline commutes exactly with such a scaling.
+// Preconditions: m has at least 1 element and m_0 > 0 finite (the callers check; see
+// inversion.hpp).
 template <class T>
 FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
   using std::abs;
-  using std::isfinite;
   FLUIDBED_EXPECTS(!m.empty() && m[0] > T(0));
   MomentScaling s;
   s.weight_exponent = detail::nearest_power_of_two_exponent(m[0]);
-  if (m.size() > 1) {
-    const T mean = m[1] / m[0];
-    if (mean > T(0) && isfinite(mean)) {
-      s.length_exponent = detail::nearest_power_of_two_exponent(mean);
-    } else if (m.size() > 2) {
-      const T second = m[2] / m[0];
-      if (second > T(0) && isfinite(second)) s.length_exponent = (detail::nearest_power_of_two_exponent(second) + 1) / 2;
-    }
-  }
+  constexpr int none = std::numeric_limits<int>::min();
+  const int from_mean =
+      m.size() > 1 && m[1] != T(0) ? detail::nearest_power_of_two_exponent(abs(m[1])) - s.weight_exponent : none;
+  // ⌈e/2⌉ for the exponent e of m_2/m_0, as a shift: (e + 1) >> 1 rounds toward −∞ for e < 0 too.
+  const int from_second =
+      m.size() > 2 && m[2] > T(0) ? (detail::nearest_power_of_two_exponent(m[2]) - s.weight_exponent + 1) >> 1 : none;
+  const int length = from_mean > from_second ? from_mean : from_second;
+  s.length_exponent = length == none ? 0 : length;
   return s;
 }
+
+namespace detail {
+
+// Whether a set could be brought to O(1): every scaled moment finite (a distribution so broad
+// that m̃_{2n−1} overflows spans more than the floating-point range) and m̃_1 a normal number
+// unless m_1 = 0 (a mean below the range relative to the spread, which sets the length scale, would be
+// rounded to a few bits or to 0: a positive set would lose its mean, ζ_1 = m̃_1/m̃_0). Every
+// entry point reports such a set as invalid_input.
+template <class T>
+FLUIDBED_HOST_DEVICE bool scaled_moments_in_range(std::span<const T> m, std::span<const T> scaled) {
+  using std::isfinite;
+  using std::isnormal;
+  for (const T& x : scaled)
+    if (!isfinite(x)) return false;
+  return m.size() < 2 || m[1] == T(0) || isnormal(scaled[1]);
+}
+
+}  // namespace detail
 
 namespace detail {
 
@@ -255,6 +278,22 @@ FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrenc
   return zeta;
 }
 
+namespace detail {
+
+// u/(a b) with the roundings of that expression (unless the result is subnormal) but no
+// intermediate over- or underflow: the mantissas are divided, the exponents added apart.
+// ±∞ or NaN for a or b = 0.
+template <class T>
+FLUIDBED_HOST_DEVICE T quotient_of_product(const T& u, const T& a, const T& b) {
+  using std::frexp;
+  using std::ldexp;
+  int eu = 0, ea = 0, eb = 0;
+  const T mu = frexp(u, &eu), ma = frexp(a, &ea), mb = frexp(b, &eb);
+  return ldexp(mu / (ma * mb), eu - ea - eb);
+}
+
+}  // namespace detail
+
 // Gordon's product-difference algorithm: Gordon (1968), J. Math. Phys. 9, 655–663,
 // doi:10.1063/1.1664624; McGraw (1997), Aerosol Sci. Technol. 27, 255–265,
 // doi:10.1080/02786829708965471; seed 000 eqs. 5.87–5.91 (note §2.2). Seed eq. 5.88 prints
@@ -271,18 +310,33 @@ FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrenc
 // is formed. Since column q is bilinear in columns q−1 and q−2, E_q = E_{q−1} + E_{q−2} + r_q,
 // and the ratio above needs only r_{k+2}: ζ_k = c_{1,k+2}/(c_{1,k+1} c_{1,k}) · 2^(r_{k+2}).
 // No exponent ever leaves the range, at any n, and the arithmetic is otherwise identical.
-// Only the last two columns are kept (O(n) storage, O(n²) work).
+// Only the last two columns are kept (O(n) storage, O(n²) work). Two limits remain, for sets
+// whose scaled moments themselves span much of the range: ζ_{q−2} is taken from column q as
+// formed, in mantissas and exponents (quotient_of_product), since its first entry may be
+// below the range once the column is renormalised by its largest one; and an entry pushed below
+// the normal range by that shift is lost to every later column, so the next ζ is NaN there and
+// the recurrence stops (a reduced rule, as below).
 //
-// PD divides by g_{1,k}; zero-mean sets (g_{1,3} = m_1 = 0) cannot be inverted by PD — use
-// Wheeler. The ζ are computed up to the first one <= 0 or not finite; the recurrence is
-// then built exactly as far as Wheeler's would go (see below). Computes n = m.size()/2
-// (<= N) levels on the moments as given.
+// Where it stops. The ζ are computed up to the first one that is not finite: a ζ_j <= 0 is no
+// reason to stop, since on the real line ζ_j < 0 is legitimate (N(1/2, 1) has ζ_3 = −3/2) and on
+// [0, ∞) the realizability scan finds it. The recurrence is built from them exactly as far as
+// Wheeler's would go (every β_k > 0 and finite), and only while every α_k is finite too.
+// PD divides by g_{1,k}, so an exact ζ_j = 0 (g_{1,j+2} = 0) leaves every later ζ undefined.
+// For j = 2k that is β_k = 0, the boundary of moment space, where Wheeler stops as well; for
+// j = 2k + 1 — a zero mean (ζ_1 = m_1/m_0), which any symmetric set on the real line has —
+// β_{k+1} = ζ_{2k+1} ζ_{2k+2} = 0·∞ is undefined although the set may be realizable: PD then
+// stops after k + 1 levels with beta[k+1] NaN (invert() reports a reduced rule with that NaN as
+// the failing value), where Wheeler, which divides by σ_{k,k} ∝ H_{2k} > 0, goes on. Near such
+// a set α_{k+1} = ζ_{2k+2} + ζ_{2k+3} cancels two large ζ of opposite sign. Wheeler's algorithm
+// is therefore the one for the real line. Computes n = m.size()/2 (<= N) levels on the moments
+// as given.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<const T> m,
                                                                  std::array<T, 2 * N>* zeta_out = nullptr) {
   using std::abs;
   using std::frexp;
   using std::isfinite;
+  using std::isnormal;
   using std::ldexp;
   const int n = int(m.size() / 2);
   FLUIDBED_EXPECTS(n >= 1 && n <= N);
@@ -293,8 +347,7 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   before[0] = T(1);
   for (int p = 0; p < 2 * n; ++p) last[p] = (p % 2 == 0) ? m[p] : T(-m[p]);
   std::array<T, 2 * N> zeta{};
-  T first_row[3] = {before[0], last[0], T(0)};  // g_{1,k}, g_{1,k+1}, g_{1,k+2} (renormalised)
-  int computed = 0;  // ζ_1 … ζ_computed, the last one possibly the failing one
+  T first_row[2] = {before[0], last[0]};  // g_{1,q−2}, g_{1,q−1} (renormalised)
   for (int q = 3; q <= rows; ++q) {
     T column[R]{};
     T largest(0);
@@ -302,16 +355,24 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
       column[p] = last[0] * before[p + 1] - before[0] * last[p + 1];
       if (abs(column[p]) > largest) largest = abs(column[p]);
     }
+    // ζ_{q−2} from the column as formed, before it is renormalised (see below).
+    const T z = detail::quotient_of_product(column[0], first_row[1], first_row[0]);
+    zeta[q - 3] = z;
+    if (!isfinite(z)) break;  // the later ζ divide by it; the recurrence below stops before it
     int shift = 0;
     if (largest > T(0) && isfinite(largest)) frexp(largest, &shift);
-    for (int p = 0; p <= rows - q; ++p) column[p] = ldexp(column[p], -shift);
-    first_row[2] = column[0];
-    const T z = ldexp(first_row[2] / (first_row[1] * first_row[0]), shift);  // ζ_{q−2}
-    zeta[q - 3] = z;
-    computed = q - 2;
-    if (!(z > T(0)) || !isfinite(z)) break;
+    bool lost = false;  // an entry pushed below the normal range by the largest one's shift
+    for (int p = 0; p <= rows - q; ++p) {
+      const T renormalised = ldexp(column[p], -shift);
+      lost = lost || (column[p] != T(0) && !isnormal(renormalised));
+      column[p] = renormalised;
+    }
+    if (lost && q < rows) {
+      zeta[q - 2] = std::numeric_limits<T>::quiet_NaN();
+      break;
+    }
     first_row[0] = first_row[1];
-    first_row[1] = first_row[2];
+    first_row[1] = column[0];
     for (int p = 0; p < R; ++p) {
       before[p] = last[p];
       last[p] = column[p];
@@ -319,20 +380,23 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   }
   if (zeta_out) *zeta_out = zeta;
   // The recurrence, level by level, stopping where Wheeler's would: level k needs
-  // β_k = ζ_{2k−1} ζ_{2k} > 0 and α_k = ζ_{2k} + ζ_{2k+1}. A failing β_k is kept in beta[k]
-  // and a failing ζ_{2k+1} stays visible in α_k, for the realizability diagnostics.
+  // β_k = ζ_{2k−1} ζ_{2k} > 0 and finite, and α_k = ζ_{2k} + ζ_{2k+1} finite (a non-finite ζ
+  // makes one of them fail, and the ζ after it, left 0, are never reached). A failing β_k is
+  // kept in beta[k] for the realizability diagnostics, which read beta[size] as the failure:
+  // where α_k alone fails, beta[k] is NaN (the level is undefined), never a passing β.
   Recurrence<T, N> r;
   r.beta[0] = m[0];
   r.alpha[0] = zeta[0];
-  r.size = computed >= 1 ? 1 : 0;
-  for (int k = 1; k < n && k < N && 2 * k + 1 <= computed; ++k) {  // k < N: as above, for GCC 12
+  r.size = isfinite(zeta[0]) ? 1 : 0;
+  for (int k = 1; k < n && k < N && r.size == k; ++k) {  // k < N: as above, for GCC 12
     r.beta[k] = zeta[2 * k - 2] * zeta[2 * k - 1];
-    if (!(r.beta[k] > T(0)) || !isfinite(r.beta[k])) break;
     r.alpha[k] = zeta[2 * k - 1] + zeta[2 * k];
-    r.size = k + 1;
+    const bool beta_passes = r.beta[k] > T(0) && isfinite(r.beta[k]);
+    if (beta_passes && isfinite(r.alpha[k]))
+      r.size = k + 1;
+    else if (beta_passes)
+      r.beta[k] = std::numeric_limits<T>::quiet_NaN();
   }
-  if (r.size >= 1 && r.size < n && 2 * r.size <= computed)
-    r.beta[r.size] = zeta[2 * r.size - 2] * zeta[2 * r.size - 1];
   return r;
 }
 
