@@ -35,136 +35,14 @@ namespace {
 
 constexpr int kCapacity = 8;  // the runtime node counts of the span entry points: 1 … 8
 
-// --------------------------------------------------------------------------------- known issues
-
-// Issues this fuzzer found and that are reported; the inputs that trigger them are skipped until
-// they are fixed. Build with -DFLUIDBED_FUZZ_SKIP_KNOWN_ISSUES=0 to see them fail.
-#ifndef FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES
-#define FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES 1
-#endif
-
-// 1. Product-difference stops computing ζ at the first ζ_j <= 0 (recurrence.hpp), a legitimate
-// value on the real line (N(1, 1) has ζ_3 < 0): the rule is cut there, status reduced where
-// Wheeler's is complete; and a non-finite ζ_{2k+1} enters α_k unchecked (the half line's ζ scan
-// catches it, the real line's β test does not): status reduced with NaN nodes.
-bool product_difference_on_real_line(const InversionOptions& o) {
-  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && o.algorithm == RecurrenceAlgorithm::product_difference &&
-         o.support == Support::real_line;
-}
-
-// 2. The three-node solver (jacobi_eigen.hpp) loses accuracy with the spread S of the nodes (in
-// the length unit of scaling_of, as it sees them): measured on random recurrences against the
-// QL, its nodes (relative to the largest) and weights (relative to m_0) are off by up to
-// ~0.2 ε S (4e-13 at S = 1e4, 1.7e-6 at 1e12, 0.02 at 1e16 in double; 8e-5 at 1e3, 0.01 at 1e6
-// in float), where the QL stays at rounding; beyond S ~ 1e19 (double), 1e7 (float) it returns
-// NaN under status ok or reduced (e.g. after a corrupted moment). The batched path shares the
-// kernel. The relative error this allows a 3-node rule (∞ for a NaN one), 0 once fixed.
-template <class T, int N>
-T three_node_error(const Quadrature<T, N>& q, std::span<const T> m) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || q.size != 3) return T(0);
-  const T mean = m[1] / m[0];  // the length unit of scaling_of (recurrence.hpp)
-  const T unit = mean > T(0) ? mean : std::sqrt(std::abs(m[2] / m[0]));
-  const T spread = (q.nodes[2] - q.nodes[0]) / unit;
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(q.nodes[i]) || !std::isfinite(q.weights[i])) return std::numeric_limits<T>::infinity();
-  return std::isfinite(spread) ? T(10) * std::numeric_limits<T>::epsilon() * spread
-                               : std::numeric_limits<T>::infinity();
-}
-
-// 3. The closed-form two-node rule (jacobi_eigen.hpp) forms the node near α_0 as centre ∓ radius,
-// which cancels when the other node is far: that node is off by ~ε|x_far| and its weight, through
-// (x − α_0)², by ~(ε|x_far|/√β_1)² relative. In double, nodes 0.1 and −5.9e6: the near node off
-// by 2.8e-10 and Σw = m_0 by 4.8e-10 (the QL is exact); in float, α = (1.084, −232446),
-// β_1 = 5.5e-6: the dominant weight is 0.128 m_0 instead of m_0. The relative error this allows.
-template <class T, int N>
-T closed_form_cancellation(const Quadrature<T, N>& q) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || q.size != 2) return T(0);
-  // In double, and in ratios that stay in range whatever the magnitudes of nodes and weights.
-  const double m0 = double(q.weights[0]) + double(q.weights[1]);
-  const double gap = double(q.nodes[1]) - double(q.nodes[0]);
-  const double coupling = std::sqrt(q.weights[0] / m0) * std::sqrt(q.weights[1] / m0) * gap;  // √β_1
-  const double far = std::max(std::abs(double(q.nodes[0])), std::abs(double(q.nodes[1])));
-  const double relative = std::numeric_limits<T>::epsilon() * (far / coupling);
-  return T(std::min(100 * relative * relative, 1e30));
-}
-
-// 4. boundary_distance on the real line divides the smallest β_k by m_2/m_0; a one-node rule tests
-// no β, and a Dirac at 0 (zero mean and variance: particles at rest) has m_2 = 0, so it is
-// 0/0 = NaN where realizability.hpp promises 1 (status reduced, one node at 0).
+// A finite set that cannot be brought to O(1) by the scaling (recurrence.hpp: a scaled moment
+// overflows, or m̃_1 is subnormal) is invalid_input for every entry point.
 template <class T>
-bool nan_boundary_distance_of_dirac_at_zero(Support support, int nodes, const T& distance) {
-  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && support == Support::real_line && nodes == 1 && std::isnan(distance);
-}
-
-// 5. A finite set whose exactly scaled moments overflow (m_k/(m_0 mean^k) beyond the range: in
-// float a log-normal with σ_g >~ 2.5 given 16 moments) is invalid_input for invert() but is
-// analysed on the overflowed values by realizability() and invert_adaptive(), which report its
-// realizable prefix (with ±∞ or NaN in the recurrence they report). Among such sets: any
-// real-line set with a tiny positive mean, which scaling_of takes as the length scale where the
-// spread is many orders larger (N(1e-30, 1) with 16 moments, while N(0, 1) inverts); the batched
-// path uses √(m_2/m_0) for a mean that is not a normal number, and inverts what invert() refuses.
-template <class T>
-bool scaled_moments_overflow(std::span<const T> m) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES || detail::input_status(m) != InversionStatus::ok) return false;
+bool beyond_scaling(std::span<const T> m) {
+  if (detail::input_status(m) != InversionStatus::ok) return false;
   std::array<T, 2 * kCapacity> scaled{};
   scale_moments(m, scaling_of(m), std::span<T>(scaled.data(), m.size()));
-  for (std::size_t k = 0; k < m.size(); ++k)
-    if (!std::isfinite(scaled[k])) return true;
-  return false;
-}
-
-// 6. Nothing checks that the rule (or the recurrence) is finite once computed: Wheeler's stop
-// test looks at β_k, not α_k, so a set whose last moment is corrupted to 0 overflows α_{n−1}
-// (float, 16 moments: α_7 = −∞) and invert() returns a node −∞ under status ok, realizability()
-// an α of −∞ under ok; and a set whose mean m_1/m_0 is beyond the range ({2e-139, 3.7e210, 1, …},
-// real line) unscales to a node +∞ under status reduced (correct_moments() calls it unchanged), as
-// does a variance beyond it to a β_1 of +∞ in realizability().
-// The ratio m_1/m_0 that scaling_of computes over- or underflows for such sets: with it gone the
-// scale depends on whether m_2 is given, so that a set and its prefix disagree
-// ({2.9e61, 2.8e-279, 5.6e-188} is realizable for correct_moments, its first two moments are not
-// for invert_adaptive). Scale exponents taken from the moments' exponents would not overflow.
-template <class T>
-bool mean_out_of_range(std::span<const T> m) {
-  return FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES && m.size() >= 2 && m[1] != T(0) && !std::isnormal(m[1] / m[0]);
-}
-
-template <class T, int N>
-bool infinite_rule(const Quadrature<T, N>& q) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
-  for (int i = 0; i < q.size; ++i)
-    if (std::isinf(q.nodes[i]) || std::isinf(q.weights[i])) return true;
-  return false;
-}
-
-// 7. correct_moments' fallbacks write M_k = M_0 r^k q^{k(k−1)/2} (r = M_1/M_0, q = M_0 M_2/M_1²)
-// without checking that it is representable: a broad set (large q) overflows to +∞ at high k, in
-// float a set in SI units (M_k ~ 1e-4^k) underflows to 0, and where r or q themselves are not
-// normal numbers (a set spanning the whole range) the moments are NaN — all under status
-// lognormal (or monodisperse), where the correction should fail. McGraw's step multiplies a
-// moment by c = exp(ln c), computed apart: a moment corrupted by more than the range (M_2 = 8e-323
-// in a set in SI units) gets c = ∞ (or 0), and the moment ∞ under status mcgraw.
-// (`m` is the corrected set: the fallback starts from M_0 … M_2 as McGraw left them.)
-template <class T>
-bool correction_out_of_range(CorrectionStatus status, const T& value, std::span<const T> m) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
-  const bool extreme = value == std::numeric_limits<T>::infinity() || value == T(0);
-  if (status == CorrectionStatus::mcgraw) return extreme;
-  if (status != CorrectionStatus::lognormal && status != CorrectionStatus::monodisperse) return false;
-  const bool parameters = std::isnormal(m[1] / m[0]) && (m.size() < 3 || std::isnormal((m[0] / m[1]) * (m[2] / m[1])));
-  return extreme || !parameters;
-}
-
-// 8. sieve_moment_checked validates the arguments, not the result: finite increasing edges whose
-// powers overflow (edges 1e-31 and 5e27 with k = −3) give +∞. Only plausible analyses (edges 0 or
-// within [1e-9, 1e3], fractions <= 1e20) must give a finite moment until it rejects the others.
-template <class T>
-bool unrepresentable_sieve_moment_accepted(const SieveAnalysis<T>& psd) {
-  if (!FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES) return false;
-  for (const T& e : psd.edges)
-    if (e != T(0) && !(e >= T(1e-9) && e <= T(1e3))) return true;
-  for (const T& f : psd.fractions)
-    if (!(f <= T(1e20))) return true;
-  return false;
+  return !detail::scaled_moments_in_range(m, std::span<const T>(scaled.data(), m.size()));
 }
 
 // ------------------------------------------------------------------------------------- contract
@@ -224,8 +102,6 @@ template <class T, int N>
 void check_rule(const char* entry, const Quadrature<T, N>& q, std::span<const T> m, Support support) {
   FUZZ_CHECK(q.size >= 1 && q.size <= N, "%s: %d nodes with a status that has nodes; moments %s", entry, q.size,
              text(m).c_str());
-  const T three_node = three_node_error(q, m);
-  if (!is_finite(three_node) || infinite_rule(q)) return;
   using L = long double;  // the sums, with range to spare: weights near the largest T add up beyond it
   L sum = 0, first = 0;
   T scale(0), gap = std::numeric_limits<T>::infinity();
@@ -245,7 +121,7 @@ void check_rule(const char* entry, const Quadrature<T, N>& q, std::span<const T>
   const T condition = q.size == 1  ? T(1)
                       : gap > T(0) ? std::max(T(1), scale / gap)
                                    : std::numeric_limits<T>::infinity();
-  const T tolerance = rounding_tolerance<T>(q.size) * condition + closed_form_cancellation(q) + three_node;
+  const T tolerance = rounding_tolerance<T>(q.size) * condition;
   // (plus a unit in the last place of the subnormals, which unscaled weights may be)
   const L subnormal_slack = L(q.size) * L(std::numeric_limits<T>::denorm_min());
   FUZZ_CHECK(close(sum, L(m[0]), L(1), L(tolerance) * L(m[0]) + subnormal_slack) || !is_finite(tolerance),
@@ -282,8 +158,7 @@ void check_inversion(const char* entry, const InversionResult<T, N>& r, std::spa
              text(m).c_str());
   FUZZ_CHECK(r.realizable_nodes == r.quadrature.size, "%s: realizable_nodes %d != %d nodes; moments %s", entry,
              r.realizable_nodes, r.quadrature.size, text(m).c_str());
-  FUZZ_CHECK((is_finite(r.boundary_distance) && r.boundary_distance >= T(0)) ||
-                 nan_boundary_distance_of_dirac_at_zero(support, r.quadrature.size, r.boundary_distance),
+  FUZZ_CHECK(is_finite(r.boundary_distance) && r.boundary_distance >= T(0),
              "%s: boundary_distance %.17g with status %s; moments %s", entry, double(r.boundary_distance),
              name(r.status), text(m).c_str());
   if (r.status == InversionStatus::ok)
@@ -294,22 +169,34 @@ void check_inversion(const char* entry, const InversionResult<T, N>& r, std::spa
 
 // Two inversions of the same set by different eigen-solvers: same status, nodes equal to rounding
 // (the recurrence is shared; only the eigen step differs).
+// Whether a node or weight of q lies within a factor 2 of the largest finite number.
+template <class T, int N>
+bool at_edge_of_range(const Quadrature<T, N>& q) {
+  for (int i = 0; i < q.size; ++i)
+    if (std::abs(q.nodes[i]) > std::numeric_limits<T>::max() / 2 || q.weights[i] > std::numeric_limits<T>::max() / 2)
+      return true;
+  return false;
+}
+
 template <class T, int N, int M>
 void check_same_rule(const char* entry, const InversionResult<T, N>& a, const InversionResult<T, M>& b,
                      std::span<const T> m) {
   if (a.status == InversionStatus::eigen_failure || b.status == InversionStatus::eigen_failure) return;
-  const T three_node = std::max(three_node_error(a.quadrature, m), three_node_error(b.quadrature, m));
-  if (!is_finite(three_node) || infinite_rule(a.quadrature) || infinite_rule(b.quadrature)) return;
+  // Two solvers round a rule at the edge of the range differently: one may unscale beyond it
+  // (invalid_input) where the other just stays within.
+  const InversionStatus invalid = InversionStatus::invalid_input;
+  if (detail::input_status(m) == InversionStatus::ok && ((a.status == invalid && at_edge_of_range(b.quadrature)) ||
+                                                         (b.status == invalid && at_edge_of_range(a.quadrature))))
+    return;
   FUZZ_CHECK(a.status == b.status && a.quadrature.size == b.quadrature.size,
              "%s: status %s (%d nodes) against %s (%d nodes); moments %s", entry, name(a.status), a.quadrature.size,
              name(b.status), b.quadrature.size, text(m).c_str());
   T scale(0);
   for (int i = 0; i < a.quadrature.size; ++i) scale = std::max(scale, std::abs(a.quadrature.nodes[i]));
   for (int i = 0; i < a.quadrature.size; ++i)
-    FUZZ_CHECK(
-        close(a.quadrature.nodes[i], b.quadrature.nodes[i], T(1e4) * rounding_tolerance<T>(N) + three_node, scale),
-        "%s: node %d is %.17g against %.17g; moments %s", entry, i, double(a.quadrature.nodes[i]),
-        double(b.quadrature.nodes[i]), text(m).c_str());
+    FUZZ_CHECK(close(a.quadrature.nodes[i], b.quadrature.nodes[i], T(1e4) * rounding_tolerance<T>(N), scale),
+               "%s: node %d is %.17g against %.17g; moments %s", entry, i, double(a.quadrature.nodes[i]),
+               double(b.quadrature.nodes[i]), text(m).c_str());
 }
 
 // ------------------------------------------------------------------------------------- decoding
@@ -388,7 +275,7 @@ void garbage_sieve(Input& in) {
   const int k = in.integer(-3, 12);
   try {
     const T value = sieve_moment_checked(psd, voidage, k);
-    FUZZ_CHECK(is_finite(value) || unrepresentable_sieve_moment_accepted(psd),
+    FUZZ_CHECK(is_finite(value),
                "sieve_moment_checked(k = %d) accepted edges %s, fractions %s, voidage %.17g and "
                "returned %.17g",
                k, text(std::span<const T>(edges, edge_count)).c_str(),
@@ -407,7 +294,6 @@ Problem<T> decode(Input& in) {
                .solver = flags & 32 ? EigenSolver::golub_welsch : EigenSolver::automatic,
                .support = p.support};
   p.odd = flags & 64;
-  if (product_difference_on_real_line(p.options)) p.options.algorithm = RecurrenceAlgorithm::wheeler;
   const std::span<T> m(p.moments.data(), std::size_t(2 * p.n));
   const auto source = Source(in.byte() % int(Source::count));
   switch (source) {
@@ -498,17 +384,33 @@ void realizability_checks(const Problem<T>& p, std::span<const T> m, const Inver
   FUZZ_CHECK((report.status == InversionStatus::ok) == (report.realizable_moments == int(m.size())),
              "realizability: status %s with %d of %zu moments realizable; moments %s", name(report.status),
              report.realizable_moments, m.size(), text(m).c_str());
-  if (scaled_moments_overflow(m)) return;
-  if (m.size() % 2 == 0 && wheeler.status != InversionStatus::eigen_failure)
+  if (beyond_scaling(m)) {
+    FUZZ_CHECK(report.status == InversionStatus::invalid_input && wheeler.status == InversionStatus::invalid_input,
+               "realizability: %s, invert: %s for a set beyond the scaling; moments %s", name(report.status),
+               name(wheeler.status), text(m).c_str());
+    return;
+  }
+  // Both report a set spanning more than the range as invalid_input, each for what it returns: the
+  // recurrence here, the rule there (β ~ x² overflows first); the recurrence() of recurrence.hpp
+  // says which.
+  const bool range_status =
+      detail::input_status(m) == InversionStatus::ok &&
+      (report.status == InversionStatus::invalid_input || wheeler.status == InversionStatus::invalid_input);
+  if (range_status && report.status == InversionStatus::invalid_input) {
+    const Recurrence<T, kCapacity> unscaled = recurrence<T, kCapacity>(m.first(2 * (m.size() / 2)));
+    bool finite = true;
+    for (int k = 0; k < unscaled.size; ++k)
+      finite = finite && is_finite(unscaled.alpha[k]) && is_finite(unscaled.beta[k]);
+    FUZZ_CHECK(!finite, "realizability: invalid_input with a finite recurrence; moments %s", text(m).c_str());
+  }
+  if (m.size() % 2 == 0 && wheeler.status != InversionStatus::eigen_failure && !range_status)
     FUZZ_CHECK(report.status == wheeler.status &&
                    (!has_nodes(report.status) || report.realizable_nodes == wheeler.realizable_nodes),
                "realizability: %s with %d nodes, invert: %s with %d; moments %s", name(report.status),
                report.realizable_nodes, name(wheeler.status), wheeler.realizable_nodes, text(m).c_str());
   if (has_nodes(report.status))
     for (int k = 0; k < report.realizable_nodes; ++k)
-      FUZZ_CHECK(FLUIDBED_FUZZ_SKIP_KNOWN_ISSUES  // ±∞ is issue 6, NaN never
-                     ? !std::isnan(report.recurrence.alpha[k]) && !std::isnan(report.recurrence.beta[k])
-                     : is_finite(report.recurrence.alpha[k]) && is_finite(report.recurrence.beta[k]),
+      FUZZ_CHECK(is_finite(report.recurrence.alpha[k]) && is_finite(report.recurrence.beta[k]),
                  "realizability: recurrence level %d not finite with status %s; moments %s", k, name(report.status),
                  text(m).c_str());
 }
@@ -648,7 +550,7 @@ void check_correction(const char* entry, const CorrectionResult<T, kCapacity>& c
                "%s: status %s, moment %zu changed from %.17g to %.17g (changed flag %d; M_0 is never changed); "
                "moments %s",
                entry, name(c.status), k, double(m[k]), double(out[k]), int(c.changed[k]), text(m).c_str());
-    FUZZ_CHECK(as_given || (is_finite(out[k]) && out[k] > T(0)) || correction_out_of_range(c.status, out[k], out),
+    FUZZ_CHECK(as_given || (is_finite(out[k]) && out[k] > T(0)),
                "%s: status %s but corrected moment %zu = %.17g; moments %s -> %s", entry, name(c.status), k,
                double(out[k]), text(m).c_str(), text(out).c_str());
   }
@@ -662,12 +564,7 @@ void correction_checks(Input& in, std::span<const T> m) {
   if (in.boolean()) o.degenerate_tolerance = T(in.log_uniform(1e-16, 1e-2));
   const CorrectionResult<T, kCapacity> c = correct_moments<T, kCapacity>(m, o);
   check_correction("correct_moments", c, m, o);
-  bool overflowed = false;
-  for (std::size_t k = 0; k < m.size(); ++k)
-    overflowed =
-        overflowed || correction_out_of_range(c.status, c.moments[k], std::span<const T>(c.moments.data(), m.size()));
-  if (c.status != CorrectionStatus::failed && c.status != CorrectionStatus::zero_mass && m.size() >= 2 && !overflowed &&
-      !mean_out_of_range(m)) {
+  if (c.status != CorrectionStatus::failed && c.status != CorrectionStatus::zero_mass && m.size() >= 2) {
     // A corrected set (or one left unchanged as realizable) has at least one node, or a rule the
     // floating-point range cannot hold (eigen_failure, inversion.hpp).
     const std::span<const T> out(c.moments.data(), m.size());
@@ -697,20 +594,28 @@ void unit_invariance_checks(Input& in, const Problem<T>& p, std::span<const T> m
   std::array<T, 2 * kCapacity> scaled{};
   for (std::size_t k = 0; k < m.size(); ++k) {
     scaled[k] = std::ldexp(m[k], b + int(k) * a);
-    if (!(std::isnormal(m[k]) && std::isnormal(scaled[k]))) return;  // not an exact change of units
+    // not an exact change of units (a moment rounded from the subnormals up to the smallest normal
+    // number, float 0x1.fffffep-127, is normal but not exact)
+    if (!(std::isnormal(m[k]) && std::isnormal(scaled[k]) && std::ldexp(scaled[k], -(b + int(k) * a)) == m[k])) return;
   }
   const std::span<const T> s(scaled.data(), m.size());
   // … and the same one in the new unit (a mean that overflows there is no change of units).
   if (scale(s[1] / s[0]) != scale(m[1] / m[0]) || !(scale(s[1] / s[0]) || (s.size() > 2 && scale(s[2] / s[0])))) return;
   const InversionResult<T, kCapacity> q = invert<T, kCapacity>(s, p.options);
   // A rule representable in one unit only (eigen_failure, invalid_input: a node beyond the range
-  // in the other), or subnormal in one, is no exact change of units either.
+  // in the other), or subnormal in one (or rounded from there to 0, or up to the smallest normal
+  // number: a weight of 1e-47 in float, a node 0x1.fffffffffffffp-1023), is no exact change of
+  // units either.
   for (const InversionResult<T, kCapacity>* x : {&r, &q}) {
     if (x->status == InversionStatus::eigen_failure || x->status == InversionStatus::invalid_input) return;
     for (int i = 0; i < x->quadrature.size; ++i)
       for (T v : {x->quadrature.nodes[i], x->quadrature.weights[i]})
-        if (v != T(0) && !std::isnormal(v)) return;
+        if (v != T(0) && !(std::abs(v) > std::numeric_limits<T>::min())) return;
   }
+  for (int i = 0; i < std::min(r.quadrature.size, q.quadrature.size); ++i)
+    if ((r.quadrature.nodes[i] == T(0)) != (q.quadrature.nodes[i] == T(0)) ||
+        (r.quadrature.weights[i] == T(0)) != (q.quadrature.weights[i] == T(0)))
+      return;
   bool same = q.status == r.status && q.quadrature.size == r.quadrature.size &&
               q.first_failing_index == r.first_failing_index && same_bits(q.boundary_distance, r.boundary_distance);
   for (int i = 0; same && i < r.quadrature.size; ++i)
@@ -791,9 +696,7 @@ void batched_checks(Input& in, std::span<const T> base, Support support) {
   for (int c = 0; c < cells; ++c) {
     const std::span<const T> m(cell[std::size_t(c)].data(), 2 * N);
     const InversionResult<T, N> r = invert<T, N>(m, {.support = support});
-    const T three_node = T(2) * three_node_error(r.quadrature, m);  // in the lanes and in invert()
-    if (beyond_half_range(m) || scaled_moments_overflow(m) || !is_finite(three_node) || infinite_rule(r.quadrature))
-      continue;
+    if (beyond_half_range(m)) continue;
     FUZZ_CHECK(status[c] == r.status && sizes[c] == r.quadrature.size,
                "invert_batched<%d>: cell %d of %d has status %s with %d nodes, invert: %s with %d; moments %s", N, c,
                cells, name(status[c]), sizes[c], name(r.status), r.quadrature.size, text(m).c_str());
@@ -810,8 +713,8 @@ void batched_checks(Input& in, std::span<const T> base, Support support) {
         continue;
       }
       const bool agree =
-          N == 3 ? close(xb, r.quadrature.nodes[i], T(1e3) * rounding_tolerance<T>(N) + three_node, scale) &&
-                       close(wb, r.quadrature.weights[i], T(1e3) * rounding_tolerance<T>(N) + three_node, mass)
+          N == 3 ? close(xb, r.quadrature.nodes[i], T(1e3) * rounding_tolerance<T>(N), scale) &&
+                       close(wb, r.quadrature.weights[i], T(1e3) * rounding_tolerance<T>(N), mass)
                  : same_or_subnormal(xb, r.quadrature.nodes[i]) && same_or_subnormal(wb, r.quadrature.weights[i]);
       FUZZ_CHECK(agree, "invert_batched<%d>: cell %d node %d = %.17g weight %.17g, invert: %.17g, %.17g; moments %s", N,
                  c, i, double(xb), double(wb), double(r.quadrature.nodes[i]), double(r.quadrature.weights[i]),

@@ -35,8 +35,4 @@ for config in debug sanitize optimized; do
 done
 
 # libFuzzer targets (clang, ASan + UBSan): each for a bounded time, from the committed seeds.
-# The moment-inversion target still finds contract violations in the library (fuzz/README.md,
-# "Known issues": NaN weights under status ok from extreme moment sets): until they are fixed
-# it replays its seeds only.
-FLUIDBED_FUZZ_REPLAY_ONLY=${FLUIDBED_FUZZ_REPLAY_ONLY-moment_inversion_fuzzer} \
-  bash scripts/run_fuzzers.sh "${FLUIDBED_FUZZ_SECONDS:-60}"
+bash scripts/run_fuzzers.sh "${FLUIDBED_FUZZ_SECONDS:-60}"
