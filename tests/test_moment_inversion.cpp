@@ -171,6 +171,18 @@ TEST_CASE("the length scale is read from exponents: a real-line set with a tiny 
   CHECK(invert_adaptive<4>(m, {.inversion = {.support = Support::real_line}}).status == InversionStatus::ok);
 }
 
+TEST_CASE("two nodes whose half gap squared overflows: the closed form takes hypot, the node stays finite") {
+  // Float atoms −1 (weight 1) and 2^66 (weight 2^-140): in scaled units α_1 ≈ 2^66, so
+  // h² ≈ 2^130 is beyond float's range while the nodes are not (the fuzzer's case: a corrupted
+  // m_3 gave eigen_failure per cell and a rule in the batched lanes).
+  const std::array<float, 4> m{1.0f, -1.0f, 1.0f + 0x1p-8f, -1.0f + 0x1p58f};
+  const auto r = invert<2>(m, {.support = Support::real_line});
+  REQUIRE(r.status == InversionStatus::ok);
+  CHECK(r.quadrature.nodes[0] == doctest::Approx(-1.0f).epsilon(1e-6));
+  CHECK(r.quadrature.nodes[1] == doctest::Approx(0x1p66f).epsilon(1e-3));
+  CHECK(r.quadrature.weights[0] == doctest::Approx(1.0f).epsilon(1e-6));
+}
+
 TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Dirac, zero mean on the real line") {
   const auto check = [](const std::array<double, 4>& m, InversionStatus status, int size, Support support) {
     const auto r = invert<2>(m, {.support = support});

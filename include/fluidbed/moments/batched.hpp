@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
@@ -126,25 +127,50 @@ struct LaneScales {
   V weight, inverse_weight, length, inverse_length;
 };
 
-// The scales of scaling_of (recurrence.hpp), per cell: it reads them from the exponent fields
-// of m_0, m_1 and m_2 (given: `second`), a few integer operations. The guards require m_0, the
-// scales and their inverses to be normal numbers.
+// The scales of scaling_of (recurrence.hpp): weight 2^a ≈ m_0, length 2^b ≈ max(|m_1|/m_0,
+// √(m_2/m_0)) (m_2 given: `second`), read from the exponent fields; here by integer operations
+// on the fields (floor instead of nearest: any power of two near the scale serves, every step
+// of the pipeline commuting exactly with it), other types per cell by scaling_of. The guards
+// require m_0, the scales and their inverses to be normal numbers.
 template <class V>
 LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<V>& guards) {
   using T = typename V::Scalar;
-  using std::isfinite;
   constexpr int L = int(V::SizeAtCompileTime);
   LaneScales<V> s;
-  for (int i = 0; i < L; ++i) {
-    const T m[3] = {m0[i], m1[i], second ? (*second)[i] : T(0)};
-    const std::size_t count = second ? 3 : 2;
-    bool usable = m0[i] > T(0);
-    for (std::size_t k = 0; k < count; ++k) usable = usable && isfinite(m[k]);
-    const MomentScaling e = usable ? scaling_of(std::span<const T>(m, count)) : MomentScaling{};
-    s.weight[i] = power_of_two<T>(e.weight_exponent);
-    s.inverse_weight[i] = power_of_two<T>(-e.weight_exponent);
-    s.length[i] = power_of_two<T>(e.length_exponent);
-    s.inverse_length[i] = power_of_two<T>(-e.length_exponent);
+  if constexpr (has_binary_layout<T>) {
+    using bits = layout_bits<T>;
+    constexpr int shift = std::numeric_limits<T>::digits - 1;
+    constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
+    constexpr int none = -4 * bias;  // no scale from this moment (0 or subnormal)
+    const auto field = [](T x) { return int((std::bit_cast<bits>(x) >> shift) & bits(2 * bias + 1)); };
+    // 2^e, or 0 where 2^e is not a normal number (the guards reject the cell then).
+    const auto power = [](int e) {
+      return e >= 1 - bias && e <= bias ? std::bit_cast<T>(bits(e + bias) << shift) : T(0);
+    };
+    for (int i = 0; i < L; ++i) {
+      const int e0 = field(m0[i]), e1 = field(m1[i]), e2 = second ? field((*second)[i]) : 0;
+      const int from_mean = e1 > 0 ? e1 - e0 : none;
+      const int from_second = e2 > 0 && (*second)[i] > T(0) ? (e2 - e0 + 1) >> 1 : none;
+      const int length = from_mean > from_second ? from_mean : from_second;
+      const int b = length == none ? 0 : length;
+      s.weight[i] = power(e0 - bias);
+      s.inverse_weight[i] = power(bias - e0);
+      s.length[i] = power(b);
+      s.inverse_length[i] = power(-b);
+    }
+  } else {
+    using std::isfinite;
+    for (int i = 0; i < L; ++i) {
+      const T m[3] = {m0[i], m1[i], second ? (*second)[i] : T(0)};
+      const std::size_t count = second ? 3 : 2;
+      bool usable = m0[i] > T(0);
+      for (std::size_t k = 0; k < count; ++k) usable = usable && isfinite(m[k]);
+      const MomentScaling e = usable ? scaling_of(std::span<const T>(m, count)) : MomentScaling{};
+      s.weight[i] = power_of_two<T>(e.weight_exponent);
+      s.inverse_weight[i] = power_of_two<T>(-e.weight_exponent);
+      s.length[i] = power_of_two<T>(e.length_exponent);
+      s.inverse_length[i] = power_of_two<T>(-e.length_exponent);
+    }
   }
   for (const V* x : std::initializer_list<const V*>{&m0, &s.weight, &s.inverse_weight, &s.length, &s.inverse_length})
     guards.require_normal(*x);
@@ -168,8 +194,10 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
     if (k + 1 < 2 * N) factor *= s.inverse_length;
   }
   guards.require_normal(factor);
-  // m̃_1 a normal number unless m_1 = 0 (detail::scaled_moments_in_range).
-  guards.require_normal((m[1] == T(0)).select(V::Constant(T(1)), scaled[1].abs()));
+  // m̃_1 a normal number unless m_1 = 0 (detail::scaled_moments_in_range); on [0, ∞) the test
+  // of ζ_1 = α_0 = m̃_1/m̃_0 (m̃_0 >= 1) below implies it.
+  if constexpr (support == Support::real_line)
+    guards.require_normal((m[1] == T(0)).select(V::Constant(T(1)), scaled[1].abs()));
   // 2. Recurrence.
   V alpha[N], beta[N];
   wheeler_levels<V, N>(scaled, N, alpha, beta);
@@ -179,7 +207,7 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
   for (int k = 1; k < N; ++k) guards.require_positive(beta[k]);
   if constexpr (support == Support::positive_half_line) {
     V zeta = alpha[0];  // ζ_1, then ζ_{2k} and ζ_{2k+1}
-    guards.require_positive(zeta);
+    guards.require_normal(zeta);  // > 0, and m̃_1 not subnormal
     for (int k = 1; k < N; ++k) {
       const V even = beta[k] / zeta;
       zeta = alpha[k] - even;
@@ -189,8 +217,8 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
   }
   // 4. Nodes and weights of the scaled recurrence.
   if constexpr (N == 3) {
-    guards.require_positive(three_node_spread_margin(alpha, beta));  // else the QL, per cell
-    gauss_three_nodes(alpha, beta, x, w);
+    const V spread_margin = gauss_three_nodes(alpha, beta, x, w);
+    guards.require_positive(spread_margin);  // else the QL, per cell
   } else {
     for (int k = 0; k < N; ++k) {
       x[k].setZero();

@@ -127,10 +127,8 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const In
         return true;
       }
       if constexpr (N >= 3)
-        if (r.size == 3 && detail::three_node_closed_form_suits(r)) {
-          q = gauss_three_nodes(r);
-          if (detail::finite_rule(q)) return true;  // (a β underflowed in the adjugate: the QL)
-        }
+        if (r.size == 3 && detail::gauss_three_nodes_within_limit(r, q) && detail::finite_rule(q))
+          return true;  // else beyond the spread limit, or a β underflowed in the adjugate: the QL
     }
     return gauss_golub_welsch(r, q);
   });

@@ -51,6 +51,8 @@ FLUIDBED_HOST_DEVICE void sort_nodes(Quadrature<T, N>& q) {
 // (m_0 x_2 − m_1)/(x_2 − x_1) loses the small weight of a skewed pair).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& r) {
+  using std::hypot;
+  using std::isfinite;
   using std::sqrt;
   FLUIDBED_EXPECTS(r.size >= 0 && r.size <= 2);
   Quadrature<T, N> q;
@@ -60,7 +62,8 @@ FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& 
     q.weights[0] = r.beta[0];
   } else if (r.size == 2) {
     const T h = (r.alpha[1] - r.alpha[0]) / T(2);
-    const T radius = sqrt(h * h + r.beta[1]);
+    T radius = sqrt(h * h + r.beta[1]);
+    if (!isfinite(radius)) radius = hypot(h, sqrt(r.beta[1]));  // h² beyond the range, the root not
     const T far = h < T(0) ? h - radius : h + radius;
     const T near = -r.beta[1] / far;
     const T y[2] = {h < T(0) ? far : near, h < T(0) ? near : far};  // ascending
@@ -175,23 +178,13 @@ FLUIDBED_HOST_DEVICE T three_node_spread_limit() {
   return T(1000);
 }
 
-// limit² (α_0² + β_1) − p for a three-node recurrence, on a scalar or a lane of cells.
+// limit² (α_0² + β_1) − p for a three-node recurrence (p = tr(B²)/6, as the solver below forms
+// it), on a scalar or a lane of cells: > 0 where the solver suits.
 template <class V>
-FLUIDBED_HOST_DEVICE V three_node_spread_margin(const V (&alpha)[3], const V (&beta)[3]) {
+FLUIDBED_HOST_DEVICE V three_node_spread_margin(const V& p, const V& alpha0, const V& beta1) {
   using T = typename lane_ops<V>::scalar;
-  const V mu = (alpha[0] + alpha[1] + alpha[2]) * (T(1) / T(3));
-  const V d0 = alpha[0] - mu, d1 = alpha[1] - mu, d2 = alpha[2] - mu;
-  const V p = (d0 * d0 + d1 * d1 + d2 * d2 + T(2) * (beta[1] + beta[2])) * (T(1) / T(6));
   const T limit = three_node_spread_limit<T>();
-  return limit * limit * (alpha[0] * alpha[0] + beta[1]) - p;
-}
-
-// Whether the three-node solver suits a recurrence with r.size == 3 (see three_node_spread_limit).
-template <class T, int N>
-FLUIDBED_HOST_DEVICE bool three_node_closed_form_suits(const Recurrence<T, N>& r) {
-  const T alpha[3] = {r.alpha[0], r.alpha[1], r.alpha[2]};
-  const T beta[3] = {r.beta[0], r.beta[1], r.beta[2]};
-  return three_node_spread_margin(alpha, beta) > T(0);
+  return limit * limit * (alpha0 * alpha0 + beta1) - p;
 }
 
 }  // namespace detail
@@ -224,8 +217,10 @@ FLUIDBED_HOST_DEVICE bool three_node_closed_form_suits(const Recurrence<T, N>& r
 // Weights are m_0 times the squared first eigenvector components. Cost (double): 6 square
 // roots and 5 divisions, against 4–5 QL sweeps of 3 square roots and 6 divisions each on one
 // dependency chain (measured for size distributions).
+// Returns the spread margin (detail::three_node_spread_margin): where it is not > 0 the rule is
+// not to be used (invert() and invert_batched() take the QL there).
 template <class V>
-FLUIDBED_HOST_DEVICE void gauss_three_nodes(const V (&alpha)[3], const V (&beta)[3], V (&nodes)[3], V (&weights)[3]) {
+FLUIDBED_HOST_DEVICE V gauss_three_nodes(const V (&alpha)[3], const V (&beta)[3], V (&nodes)[3], V (&weights)[3]) {
   using ops = detail::lane_ops<V>;
   using T = typename ops::scalar;
   using std::sqrt;
@@ -289,24 +284,37 @@ FLUIDBED_HOST_DEVICE void gauss_three_nodes(const V (&alpha)[3], const V (&beta)
   weights[0] = ops::choose(s, low_weight, extreme_weight);
   weights[1] = ops::choose(s, high_weight, low_weight);
   weights[2] = ops::choose(s, extreme_weight, high_weight);
+  return detail::three_node_spread_margin(p, alpha[0], beta[1]);
 }
 
-// The same for one cell: a recurrence with r.size == 3 (β_1, β_2 > 0). invert() calls it only
-// within detail::three_node_spread_limit, the QL beyond.
+namespace detail {
+
+// The three-node rule of a recurrence with r.size == 3 (β_1, β_2 > 0) into q; false where the
+// spread margin is not > 0 (q then not to be used).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_three_nodes(const Recurrence<T, N>& r) {
+FLUIDBED_HOST_DEVICE bool gauss_three_nodes_within_limit(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
   static_assert(N >= 3);
   FLUIDBED_EXPECTS(r.size == 3);
   const T alpha[3] = {r.alpha[0], r.alpha[1], r.alpha[2]};
   const T beta[3] = {r.beta[0], r.beta[1], r.beta[2]};
   T x[3], w[3];
-  gauss_three_nodes(alpha, beta, x, w);
-  Quadrature<T, N> q;
+  const T margin = gauss_three_nodes(alpha, beta, x, w);
   q.size = 3;
   for (int i = 0; i < 3; ++i) {
     q.nodes[i] = x[i];
     q.weights[i] = w[i];
   }
+  return margin > T(0);
+}
+
+}  // namespace detail
+
+// The same for one cell: a recurrence with r.size == 3 (β_1, β_2 > 0), whatever the spread.
+// invert() uses it only within detail::three_node_spread_limit, the QL beyond.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_three_nodes(const Recurrence<T, N>& r) {
+  Quadrature<T, N> q;
+  detail::gauss_three_nodes_within_limit(r, q);
   return q;
 }
 
