@@ -149,11 +149,15 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<
     };
     for (int i = 0; i < L; ++i) {
       const int e0 = field(m0[i]), e1 = field(m1[i]), e2 = second ? field((*second)[i]) : 0;
+      const bool positive_second = second && (*second)[i] > T(0);
       const int from_mean = e1 > 0 ? e1 - e0 : none;
-      const int from_second = e2 > 0 && (*second)[i] > T(0) ? (e2 - e0 + 1) >> 1 : none;
+      const int from_second = e2 > 0 && positive_second ? (e2 - e0 + 1) >> 1 : none;
       const int length = from_mean > from_second ? from_mean : from_second;
       const int b = length == none ? 0 : length;
-      s.weight[i] = power(e0 - bias);
+      // A subnormal m_1 or m_2 has no exponent field to read (scaling_of takes it from frexp):
+      // such a cell goes to invert() (weight 0 fails the guards).
+      const bool subnormal = (m1[i] != T(0) && e1 == 0) || (positive_second && e2 == 0);
+      s.weight[i] = subnormal ? T(0) : power(e0 - bias);
       s.inverse_weight[i] = power(bias - e0);
       s.length[i] = power(b);
       s.inverse_length[i] = power(-b);
