@@ -58,10 +58,7 @@ FLUIDBED_HOST_DEVICE void unscale(Quadrature<T, N>& q, MomentScaling s) {
 // Whether every node and weight of q is finite.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE bool finite_rule(const Quadrature<T, N>& q) {
-  using std::isfinite;
-  for (int i = 0; i < q.size; ++i)
-    if (!isfinite(q.nodes[i]) || !isfinite(q.weights[i])) return false;
-  return true;
+  return finite_prefix(q.nodes, q.weights, q.size);
 }
 
 }  // namespace detail

@@ -272,21 +272,6 @@ struct RealizabilityReport {
   bool hankel_positive = false;  // every tested determinant among the hankel_count is > 0
 };
 
-namespace detail {
-
-// Whether the recurrence of a report is finite in the caller's units: a realizable set whose
-// mean or variance lies beyond the floating-point range ({2e-139, 3.7e210, 1, …}) has it
-// finite only in scaled units. (The ζ are diagnostics, ±∞ there where beyond the range.)
-template <class T, int N>
-FLUIDBED_HOST_DEVICE bool representable(const Recurrence<T, N>& r) {
-  using std::isfinite;
-  for (int k = 0; k < r.size; ++k)
-    if (!isfinite(r.alpha[k]) || !isfinite(r.beta[k])) return false;
-  return true;
-}
-
-}  // namespace detail
-
 // The realizability test of m_0 … m_{size−1}, 1 <= size <= 2N, on the support. Reuses the
 // recurrence of recurrence.hpp (Wheeler on exactly scaled moments); no threshold.
 template <class T, int N>
@@ -311,7 +296,11 @@ FLUIDBED_HOST_DEVICE RealizabilityReport<T, N> realizability(std::span<const T> 
   out.recurrence.beta[0] = m[0];  // also when no level is realizable
   out.zeta_count = a.scan.zeta_count;
   for (int j = 0; j < out.zeta_count; ++j) out.zeta[std::size_t(j)] = ldexp(a.scan.zeta[std::size_t(j)], b);
-  if (!detail::representable(out.recurrence)) return RealizabilityReport<T, N>{};  // invalid_input
+  // A realizable set whose mean or variance lies beyond the floating-point range ({2e-139,
+  // 3.7e210, 1, …}) has its recurrence finite only in scaled units: invalid_input. (The ζ are
+  // diagnostics, +∞ there where beyond the range.)
+  if (!detail::finite_prefix(out.recurrence.alpha, out.recurrence.beta, out.recurrence.size))
+    return RealizabilityReport<T, N>{};
 
   const int count = int(m.size());
   T scaled[2 * N]{};

@@ -131,6 +131,15 @@ FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
 
 namespace detail {
 
+// Whether the first `size` entries of two arrays (α and β, or nodes and weights) are finite.
+template <class T, std::size_t N>
+FLUIDBED_HOST_DEVICE bool finite_prefix(const std::array<T, N>& a, const std::array<T, N>& b, int size) {
+  using std::isfinite;
+  for (int i = 0; i < size; ++i)
+    if (!isfinite(a[std::size_t(i)]) || !isfinite(b[std::size_t(i)])) return false;
+  return true;
+}
+
 // Whether a set could be brought to O(1): every scaled moment finite (a distribution so broad
 // that m̃_{2n−1} overflows spans more than the floating-point range) and m̃_1 a normal number
 // unless m_1 = 0 (a mean below the range relative to the spread, which sets the length scale, would be
