@@ -26,7 +26,7 @@ namespace detail {
 //   F0(φ) = 10 φ/(1 − φ)² + (1 − φ)² (1 + 1.5 √φ).
 // F0(0) = 1 (Stokes drag of an isolated sphere). It is also the Stokes term of Beetstra
 // et al. (2007) and Tang et al. (2015), and exactly the A term of seed 002 eq. (19):
-// A (1 − ε)/(18 ε²) = F0 (seed 002 note §2.6, table checked to 10 digits).
+// A (1 − ε)/(18 ε²) = F0 (an algebraic identity; checked to 10 digits for 0.01 ≤ φ ≤ 0.6).
 template <class S>
 FLUIDBED_HOST_DEVICE S van_der_hoef_stokes_force(const S& phi) {
   using std::sqrt;
@@ -77,7 +77,7 @@ struct VanDerHoef2005 : DragLaw<VanDerHoef2005> {
 //
 // F0 the van der Hoef (2005) Stokes term above. Native convention: pressure_gradient.
 //
-// Seed 002 eq. (19) is misprinted (note item D1): it writes the Ergun-form B as
+// Seed 002 eq. (19) is misprinted: it writes the Ergun-form B as
 // 0.31 (1/ε + 3εφ) + 8.4 Re^−0.343, leaving 8.4 Re^−0.343 outside the factor 0.31 (=
 // 18 · 0.413/24 rounded). The published form, used here and by OpenFOAM and MFiX, has
 // 0.413/24 multiplying all three terms; the misprint changes β by up to +89 % (φ = 0.1,
@@ -89,7 +89,8 @@ struct VanDerHoef2005 : DragLaw<VanDerHoef2005> {
 // and F → F0 continuously as Re → 0 (the inertial term is O(Re^(1.157 + 2φ))).
 // Validity: the fitted LB data, 0.1 ≤ φ ≤ 0.6 and Re ≤ 1000, "within 8 %" (seed 002
 // §II.D). It is a fit for arrays, not for isolated spheres: as φ → 0 it is 16 % above
-// Schiller–Naumann at Re = 100 and 68 % above at Re = 1000 (seed 002 note D8).
+// Schiller–Naumann at Re = 100 and 68 % above at Re = 1000 (F(0, Re) = 5.27 and 30.8
+// against 4.55 and 18.3).
 struct Beetstra2007 : DragLaw<Beetstra2007> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
@@ -235,7 +236,8 @@ class PolydisperseDragCoefficientWithDerivatives {
 //   β_i,pressure_gradient = 18 μ_f ε φ_i F · y_i / d_i²                       (model A)
 //   β_i,classical         = 18 μ_f   φ_i F · (ε y_i + φ y_i² + c ε y_i³) / d_i²  (model B)
 //
-// with c = 0.064. Seed 002 has no polydisperse formula (note §2.8, D10); this is the form
+// with c = 0.064. Seed 002 has no polydisperse formula (§VI(i) only says that the drag
+// relations in use are wrong by up to a factor 5 for a diameter ratio 1:4); this is the form
 // of the independent reference generator (tests/reference/drag_reference.py) and, for the
 // factors, of MFiX's comment citing the erratum ("the correction factor differs for model
 // A versus model B; the one for model A is found from the one for model B and neglects the
@@ -250,9 +252,9 @@ class PolydisperseDragCoefficientWithDerivatives {
 // which for one species is β_cl = β_pg/ε. For a mixture the conversion couples the
 // species, so no single factor converts one convention into the other: both are returned.
 //
-// Decision on the seed note's reading (D10: β_i,pg = 18 μ ε φ_i F f_i/d_i² with the
-// model-B factor f_i). That applies the total-force factor to the drag-only convention;
-// it is not used. What the note checks still holds in the right place: without the y³
+// A reading that suggests itself, β_i,pg = 18 μ ε φ_i F f_i/d_i² with the model-B factor
+// f_i, applies the total-force factor to the drag-only convention; it is not used. Its
+// consistency check still holds in the right place: without the y³
 // term Σ_i x_i f_i/y_i² = 1 (model B) and Σ_i x_i y_i/y_i² = 1 (model A), so the mixture's
 // total drag equals the monodisperse Beetstra law at <d> in either convention. MFiX's
 // extra 1/y_i² (it also uses d_i in the Stokes prefactor) double counts; not followed.

@@ -4,7 +4,7 @@
 // 2007, Tang 2015, Hill–Koch–Ladd 2001, Tenneti 2011) report the mean force on a particle
 // normalised by the Stokes drag at the superficial slip,
 //   F = F_particle / (3π μ_f d ε w),
-// and they disagree on what F_particle is (seed 002 note §2.2 and item D2):
+// and they disagree on what F_particle is (seed 002 §II.D: F_d = ε F_{g→s}):
 //
 //   drag only        F     = F_drag / (3π μ_f d ε w)     van der Hoef, Beetstra, Tang
 //   total force      F_tot = F_total / (3π μ_f d ε w)    Hill–Koch–Ladd, Tenneti
@@ -16,8 +16,8 @@
 //
 //   β_pressure_gradient = 18 μ_f ε φ F / d²  = 18 μ_f ε² φ F_tot / d².
 //
-// Confusing the two is an error by a factor ε; the anchors survey (§2.8) found three
-// codes implementing Tenneti's correlation in three mutually inconsistent ways.
+// Confusing the two is an error by a factor ε; MFiX 25.2.1, waLBerla and OpenFOAM
+// implement Tenneti's correlation in three mutually inconsistent ways (tenneti.hpp).
 #pragma once
 
 #include "../core/config.hpp"

@@ -20,7 +20,7 @@ namespace fluidbed::drag {
 // (both in the pressure-gradient convention, which is native here; see ergun.hpp and
 // constant_exponent.hpp for the two laws and their Reynolds numbers).
 // The law is discontinuous at ε = 0.8: the ratio Wen–Yu/Ergun there is 0.89 at Re = 0.1
-// and 0.27 at Re = 1000 (seed 002 note §2.4). The switch follows OpenFOAM's rule
+// and 0.27 at Re = 1000 (seed 002 eqs. 45, 46). The switch follows OpenFOAM's rule
 // (Wen–Yu at ε = 0.8 exactly). Use GidaspowBlended for a continuous law.
 struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;

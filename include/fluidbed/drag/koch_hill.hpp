@@ -20,7 +20,7 @@ namespace fluidbed::drag {
 // Benyahia, S., Syamlal, M., O'Brien, T.J. (2006), "Extension of Hill–Koch–Ladd drag
 // correlation over all ranges of Reynolds number and solids volume fraction", Powder
 // Technol. 162, 166–174, doi:10.1016/j.powtec.2005.12.014. This is that extension, in the
-// form MFiX implements it (anchors §2.9 "MFX"):
+// form MFiX implements it (DRAG_KOCH_HILL in model/drag_gs.f, MFiX 25.2.1):
 //
 //   Re_h = Re/2 = ρ_f ε w d/(2 μ_f)   (Hill's Reynolds number: radius, superficial slip)
 //   w_b  = exp(−10 (0.4 − φ)/φ)       (blend towards the dense Carman form, = 1 at φ = 0.4)
@@ -36,7 +36,7 @@ namespace fluidbed::drag {
 //   β_pressure_gradient = 18 μ_f ε² φ F / d².
 //
 // Native convention: pressure_gradient. F is Hill's TOTAL force normalisation (it includes
-// the mean-pressure-gradient share; dimensionless_force.hpp), hence ε² (seed 002 note D2).
+// the mean-pressure-gradient share; dimensionless_force.hpp), hence ε² (seed 002 §II.D).
 // The constants (17.14; 17.89, −11.03, 15.41; F1; F3's dilute branch; the switches) are
 // those of MFiX's DRAG_KOCH_HILL, which cites Benyahia et al. (2006); the paper itself
 // could not be consulted here.
@@ -45,9 +45,10 @@ namespace fluidbed::drag {
 // Lethe; seed 002 §III.D.1): HKL has 16.14 where F0 here has 17.14, uses F0 for φ < 0.4
 // without blending, has no quadratic low-Re term and no separate F2:
 // β = 18 μ_f ε² φ (F0 + F3 Re_h)/d² (Lethe writes 8.14 for 8.16). At φ = 0.2, air,
-// d = 500 µm, w = 0.5 m/s, HKL gives 1065 and this law 1182 kg m⁻³ s⁻¹ (anchors appendix).
+// d = 500 µm, w = 0.5 m/s, HKL gives 1065 and this law 1182 kg m⁻³ s⁻¹ (both evaluated
+// as the two codes write them).
 // Seed 002 prints the HKL Stokes coefficient A_o with the (135/64)φ ln φ term missing its
-// logarithm and a duplicated middle case (note D3), and its eq. (47) is HKL's linear law
+// logarithm and a duplicated middle case (§III.D.1), and its eq. (47) is HKL's linear law
 // F2 + F3 Re_h in Ergun form with A_2 = A_o (the 9 = 18/2 there is Re_h = Re/2).
 //
 // Switches and limits. β is continuous across Re_T (the larger root of the two branches'

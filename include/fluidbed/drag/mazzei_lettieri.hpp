@@ -26,7 +26,7 @@ namespace fluidbed::drag {
 // Native convention: classical. Re* is the terminal Reynolds number that Richardson–Zaki
 // assigns to the state; the relation is implicit because n_e depends on Re*. With
 // g(x) = x + n_e(eˣ) ln ε − ln Re, x = ln Re*, g' = 1 + Re* n_e'(Re*) ln ε ≥ 1 for ε ≤ 1,
-// so the root is unique, bracketed by Re ε^−2.4 ≤ Re* ≤ Re ε^−4.8 (note §6.3); it is
+// so the root is unique, bracketed by Re ε^−2.4 ≤ Re* ≤ Re ε^−4.8 (2.4 < n_e < 4.8); it is
 // found by Halley's method in x (settling::richardson_zaki_terminal_reynolds, which
 // solves the same relation for Re_t).
 //
@@ -36,7 +36,8 @@ namespace fluidbed::drag {
 // ψ_e itself is 0/0 at ε = 1; equivalent_exponent() returns its limit there.
 //
 // Property: at homogeneous equilibrium (eq. 3.28) this law gives Richardson–Zaki
-// expansion u_s = u_t ε^n_e(Re_t) exactly, with Dallavalle's u_t (note §6.5).
+// expansion u_s = u_t ε^n_e(Re_t) exactly, with Dallavalle's u_t: eq. 3.28 with this β is
+// Dallavalle's terminal-velocity balance at U = u_s ε^−n_e, so Re* = Re_t (seed 000 Fig. 3.5).
 // Validity: every ε in (0, 1] and Re, by construction, wherever eq. 3.24 and
 // Dallavalle's C_D hold for the single particle.
 struct MazzeiLettieri : DragLaw<MazzeiLettieri> {

@@ -41,7 +41,7 @@ namespace fluidbed::drag {
 // The switch at ε = 0.85 is continuous only if c1 = 0.85^(d1 − 1.28); the defaults miss
 // that by 0.05 % (0.85^1.37 = 0.80040): β jumps by 0.05 % (V_r ≈ B) to 0.1 % (β ∝ V_r⁻² as
 // Re_s → ∞) at large Re_s, not at all at Re_s = 0 (V_r = A). continuous_at_switch()
-// derives c1 from d1. Neither OpenFOAM nor MFiX enforces continuity (anchors §2.5; MFiX
+// derives c1 from d1. Neither OpenFOAM nor MFiX enforces continuity (MFiX
 // uses B = c1 ε^1.28 at ε = 0.85 exactly, as here, OpenFOAM uses ε < 0.85).
 // Validity: the velocity–voidage data behind it, liquid fluidization and sedimentation,
 // 0.4 ≲ ε ≤ 1; Dallavalle's C_D up to Re ≈ 10⁴.

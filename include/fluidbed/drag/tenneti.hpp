@@ -27,8 +27,8 @@ namespace fluidbed::drag {
 // Convention. Tenneti's F is the TOTAL mean force on a particle, including the share of
 // the mean pressure gradient, normalised by the Stokes drag at the superficial slip (the
 // Hill convention; dimensionless_force.hpp). The drag alone is ε F_tot, hence ε² above:
-// this is waLBerla's form ("version from Finn et al."). The anchors survey (§2.8) found
-// two other forms in use, both inconsistent with that normalisation:
+// this is waLBerla's form ("version from Finn et al."). Two other forms are in use, both
+// inconsistent with that normalisation (β at φ = 0.4, air, d = 500 µm, w = 0.5 m/s):
 //   MFiX 25.2.1  β = 18 μ ε φ F_tot/d²                        (1/ε times this law: it
 //                treats the total force as drag, counting the pressure share twice in a
 //                −φ∇p momentum equation; 6897 against 4138 kg m⁻³ s⁻¹ at φ = 0.4);
