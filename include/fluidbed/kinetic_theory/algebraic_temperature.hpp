@@ -10,9 +10,10 @@
 //   B x² + b x − c = 0,   b = P ∇·u + 3β,   c = 2A D':D' + Λ (∇·u)² ≥ 0,
 // whose non-negative root is taken, in the form without cancellation:
 //   b ≥ 0: x = 2c/(b + √(b² + 4Bc))  (0 when c = 0);   b < 0: x = (−b + √(b² + 4Bc))/(2B).
-// No seed prints this (seed-004 note §2.12 derives the simple-shear case Θ = Aγ̇²/B);
+// No seed prints this; in simple shear without gas (b = 0, D':D' = γ̇²/2) it is Θ = Aγ̇²/B.
 // OpenFOAM's "equilibrium" option and MFiX's GT_ALGEBRAIC solve the same quadratic with
-// their own constants (anchors note §2.16, where MFiX's differs by a factor in K3).
+// their own constants: in the viscous coefficient K3 MFiX has (3e + 1)/2 where OpenFOAM has
+// 1, and MFiX leaves the kinetic pressure out of the ∇·u coefficient.
 // Preconditions (asserted in debug builds): as for the laws (φ ∈ [0, 1), g0 > 0, material
 // valid), D':D' ≥ 0, β ≥ 0; and B > 0 (e < 1, φ > 0) or b > 0 — with no dissipation and
 // b ≤ 0 (compression at e = 1, or φ = 0 without gas) there is no finite root and the result is

@@ -1,8 +1,8 @@
 // fluidbed — radial distribution functions at contact g0(φ), one solids class.
 //
 // Every stress, viscosity, conductivity and dissipation of kinetic theory is proportional
-// to g0 (or to 1/g0), and the forms in use differ by a factor of 3 at φ = 0.55 (seed-004
-// note Part 4 §1: Percus–Yevick 6.30, Carnahan–Starling 7.96, Ma–Ahmadi 8.77, Ogawa
+// to g0 (or to 1/g0), and the forms in use differ by a factor of 3 at φ = 0.55 (g0 =
+// Percus–Yevick 6.30, Carnahan–Starling 7.96, Ma–Ahmadi 8.77, Ogawa
 // (φ_max = 0.63) 22.6, Lathouwers–Bellan (0.64) 103). So g0 is a separate, pluggable
 // object: call it with φ (a Dual φ gives dg0/dφ) and pass its value to the closures.
 //
@@ -16,7 +16,9 @@
 // Behaviour at and beyond maximum packing. The forms with a packing limit φ_max diverge
 // there. Codes cap φ (MFiX Ma–Ahmadi at 0.643), freeze g0 (OpenFOAM SinclairJackson above
 // alphaMinFriction) or do nothing (OpenFOAM LunSavage: NaN beyond φ_max), and the capped
-// forms' derivatives are then not the derivatives of the values (anchors note §2.13).
+// forms' derivatives are then not the derivatives of the values (OpenFOAM's
+// SinclairJackson g0′ is not the slope of its frozen g0; MFiX's Ma–Ahmadi g0′ uses the
+// uncapped φ and is NaN beyond φ_max).
 // Here the singular factor is continued linearly beyond φ_c = φ_max − packing_margin
 // (default 0.01): g0 is finite for every φ < 1, continuous with a continuous slope,
 // increasing, and its derivative is exactly that of the continued function. Below φ_c
@@ -145,7 +147,7 @@ struct GidaspowRadialDistribution : detail::CubeRootContact<0.6> {
 // Ma & Ahmadi (1986), J. Chem. Phys. 84, 3449–3450; seed 002 eq. 77
 // with Table III (the Twente TFM):
 //   g0 = (1 + 2.5φ + 4.5904φ² + 4.515439φ³) / (1 − (φ/0.64356)³)^0.67802.
-// The anchors note's 4.5094 (MFiX) is a transposition of the published 4.5904. The
+// MFiX's source writes 4.5094, a transposition of the published 4.5904. The
 // denominator factor is continued linearly above 0.64356 − packing_margin.
 struct MaAhmadi {
   static constexpr double max_packing = 0.64356;
