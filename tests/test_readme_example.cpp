@@ -41,8 +41,9 @@ TEST_CASE("README moment-inversion example compiles and inverts its log-normal s
   double total = 0;
   for (int i = 0; i < r.quadrature.size; ++i) total += r.quadrature.weights[i];
   CHECK(total == doctest::Approx(0.6).epsilon(1e-14));
-  // Near the exact log-normal rule (73.46, 125.2, 213.5 µm; seed note §7.7): the printed
-  // moments carry 5 digits.
+  // Near the exact rule of the log-normal these moments are rounded from (M_0 = 0.6, median
+  // 100 µm, s = 0.3: nodes 73.46, 125.2, 213.5 µm; case lognormal_si of
+  // tests/reference/moments_reference.py): the printed moments carry 5 digits.
   CHECK(r.quadrature.nodes[1] == doctest::Approx(125.2e-6).epsilon(0.01));
 }
 

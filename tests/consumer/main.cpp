@@ -9,7 +9,8 @@ int main() {
   // Ergun at ε = 0.5, w = 0.1 m/s, air, d = 0.5 mm: 150 φ²μ/(εd²) + 1.75 φρw/d.
   const fluidbed::drag::DragState<double> cell{0.5, 0.1, {1.2, 1.8e-5}, 5e-4};
   const double beta = fluidbed::drag::Ergun{}(cell).pressure_gradient();
-  // Seed-004 note §3.2: Lun pressure 46.5227 Pa at φ = 0.3, Θ = 0.01 (Ogawa g0, 0.63).
+  // Lun et al. (1984) pressure ρ_s φ Θ [1 + 2(1 + e) φ g0] with Ogawa's g0 = 1/(1 − (φ/0.63)^⅓)
+  // = 4.56406 at φ = 0.3, Θ = 0.01 m²/s², e = 0.9, ρ_s = 2500 kg/m³: 46.5227 Pa (seed 001 eqs. 21, 24).
   using namespace fluidbed::kinetic_theory;
   const ConstitutiveSet set{Ogawa{0.63}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}};
   const double pressure = set(0.3, 0.01, GranularMaterial<double>{500e-6, 2500.0, 0.9}).pressure;
