@@ -9,9 +9,12 @@ Writes (next to this file):
 Formulas, sources and conventions: README.md (same folder).  Everything is
 evaluated with mpmath at 40 significant digits; inputs are exact decimals; branch
 decisions (switch points) are taken on the exact decimal inputs (fractions.Fraction),
-never on rounded binary values.  The script asserts the independently checked
-numbers printed in /work/shared/notes (seed000-closures.md, seed002-multiscale.md,
-anchors-closures.md) before writing anything.
+never on rounded binary values.  Before writing anything the script
+asserts numbers computed independently of it: values that an independent double-precision
+Python evaluation of the seeds' formulas gave when the seeds were read (seed 000 Ch. 3-4,
+seed 002 Sec. II-III; each block below names the equation), seed 000's own numbers (Table
+3.1 form, Table 4.3 system 1), and a re-evaluation of the drag laws exactly as OpenFOAM,
+MFiX 25.2.1 and waLBerla write them (air, d = 500 um, w = 0.5 m/s; not published data).
 
 Run with Debian's python:  /usr/bin/python3 drag_reference.py
 It prints a single summary line.
@@ -70,7 +73,8 @@ def n_e(R):
 
 
 def restar(eps, Re):
-    """Solve Re* = Re / eps^{n_e(Re*)} (seed 000 eq 3.53-3.54, note sec. 6.3)."""
+    """Solve Re* = Re / eps^{n_e(Re*)} (seed 000 eq 3.53-3.54; the root is unique and lies in
+    [Re eps^-2.4, Re eps^-4.8] because 2.4 < n_e < 4.8)."""
     if Re == 0:
         return mpf(0)
     if eps == 1:
@@ -332,7 +336,7 @@ def beta(law, eps_s, rho_s, mu_s, d_s, *, w=None, Re_s=None):
 
 
 # ----------------------------------------------------------------------------
-# checks against the independently checked numbers printed in the notes
+# checks against the independently computed numbers (module docstring)
 # ----------------------------------------------------------------------------
 def close(x, ref, tol=None, what=''):
     """ref is a decimal string; default tolerance = half a unit in its last printed digit
@@ -349,23 +353,23 @@ def close(x, ref, tol=None, what=''):
 
 def run_checks():
     nchk = 0
-    # --- seed000 note sec. 4: Schiller-Naumann values
+    # --- Schiller-Naumann C_D (seed 000 eq. 3.35), and its 0.4 % jump at Re = 1000
     for Re, ref in [('1', '27.6'), ('10', '4.151066'), ('100', '1.091731'), ('999', '0.438442')]:
         close(cdre_sn(M(Re), Fraction(Re)) / M(Re), ref, what='C_D,SN(%s)' % Re); nchk += 1
     close(M(24) / 1000 * (1 + M('0.15') * mpf(1000) ** M('0.687')), '0.438288', what='SN at 1000-'); nchk += 1
-    # --- seed000 note sec. 6.4: Dallavalle values
+    # --- Dallavalle C_D (seed 000 eq. 3.55)
     for Re, ref in [('1', '29.4849'), ('10', '4.6134455'), ('100', '1.2321'), ('1000', '0.6111946')]:
         close(cdre_dv(M(Re)) / M(Re), ref, what='C_D,DV(%s)' % Re); nchk += 1
-    # --- seed000 note sec. 2: n_e values
+    # --- Richardson-Zaki exponent n_e (seed 000 eq. 3.24)
     for R, ref in [('1e-6', '4.79999'), ('0.1', '4.727566'), ('1', '4.442553191'), ('10', '3.609618'),
                    ('100', '2.767310'), ('1000', '2.474720'), ('1e4', '2.413636'), ('1e8', '2.400014')]:
         close(n_e(M(R)), ref, what='n_e(%s)' % R); nchk += 1
-    # --- seed000 note sec. 5: Di Felice alpha_d values
+    # --- Di Felice alpha_d (seed 000 eq. 3.48): symmetric in log10 Re about 1.5, minimum 2.05 there
     for R, ref in [('1', '2.488976'), ('1000', '2.488976'), ('10', '2.126377'), ('100', '2.126377'),
                    ('1e-3', '2.699974'), ('1e5', '2.698578'), ('28', '2.05091')]:
         close(alpha_d(M(R)), ref, what='alpha_d(%s)' % R); nchk += 1
     close(alpha_d(mpf(10) ** M('1.5')), '2.05', tol=mpf(10) ** -30, what='alpha_d min'); nchk += 1
-    # --- seed000 note sec. 6.4: Mazzei-Lettieri table (eps, Re, Re*, n_e, C_D, C_D*, phi, psi_e)
+    # --- Mazzei-Lettieri, seed 000 Table 3.1 evaluated (eps, Re, Re*, n_e, C_D, C_D*, phi, psi_e)
     table = """0.40 0.01 0.637028 4.533744 2364.88 44.1425 12.1195 2.722734
 0.40 1 20.4616 3.294316 29.4849 2.85994 6.49767 2.042413
 0.40 10 121.375 2.724353 4.61345 1.13569 5.80248 1.918917
@@ -402,7 +406,7 @@ def run_checks():
         cl_reg = law_mazzei_lettieri(Fraction(e), eps, w, mpf(1), mpf(1), mpf(1), Re, Fraction(R))[0]
         assert abs(cl_t31 - cl_reg) < mpf(10) ** -30 * cl_reg
         nchk += 7
-    # --- seed000 note sec. 6.5: system 1 state, classical beta values
+    # --- seed 000 Table 4.3 system 1 at u = 5.28e-3 m/s (Dallavalle u_t): classical beta values
     rf, mu, rp, d = M('998'), M('1e-3'), M('2780'), M('253e-6')
     Ar = rf * (rp - rf) * G * d ** 3 / mu ** 2
     sRt = (-M('4.8') + sqrt(M('4.8') ** 2 + 4 * M('0.63') * sqrt(4 * Ar / 3))) / (2 * M('0.63'))
@@ -427,7 +431,7 @@ def run_checks():
                      (law_kmiec, '8.8793337e5'), (law_difelice_sn, '7.5076276e5'), (law_difelice_dv, '8.0805005e5')]:
         close(law(*args)[0], ref, what='sys1 beta ' + law.__name__); nchk += 1
     nchk += 10
-    # --- seed002 note sec. 9.2: Beetstra F (published form)
+    # --- Beetstra F (published form, Beetstra et al. 2007; not seed 002 eq. 19 as printed)
     for phi, R, ref in [('0.05', '0', '1.759224323'), ('0.05', '1', '1.835059107'), ('0.05', '10', '2.464075375'),
                         ('0.05', '100', '6.881903609'), ('0.05', '1000', '38.70226855'),
                         ('0.1', '1', '2.498160296'), ('0.1', '1000', '47.74502664'),
@@ -437,7 +441,7 @@ def run_checks():
         close(F_beetstra(M(phi), M(R)), ref, what='F_BVK(%s,%s)' % (phi, R)); nchk += 1
     for R, ref in [('1', '1.08093'), ('10', '1.62931'), ('100', '5.27230'), ('1000', '30.78770')]:
         close(F_beetstra(M('1e-9'), M(R)), ref, what='F_BVK dilute'); nchk += 1
-    # --- seed002 note sec. 9.1: Ergun-form LHS = beta_pg d^2 eps/(mu phi)
+    # --- seed 002 eqs. 18, 46, 19: Ergun-form LHS = beta_pg d^2 eps/(mu phi)
     for e, R, erg, wy, bvk in [('0.4', '0.5', '90.875', '89.24047397', '109.0066324'),
                                ('0.4', '500', '965', '956.9349488', '760.9846083'),
                                ('0.6', '10', '77.5', '72.32215069', '87.24839341'),
@@ -447,8 +451,8 @@ def run_checks():
         fac = st[1] / (1 - st[1])  # d^2 eps/(mu phi) with mu = d = 1
         close(law_ergun(*st)[1] * fac, erg, what='Ergun LHS'); close(law_lewis(*st)[1] * fac, wy, what='WY LHS')
         close(law_beetstra(*st)[1] * fac, bvk, what='BVK LHS'); nchk += 3
-    # --- seed002 note sec. 9.4: dimensional beta (pressure-gradient).  The note rounds rho to
-    # 1.200722; its numbers were computed with rho = 1.01e5*0.02896/(8.314*293) = 1.2007215...
+    # --- seed 002: dimensional beta (pressure-gradient) in air at 1.01e5 Pa, 293 K.  The values
+    # were computed with rho = 1.01e5*0.02896/(8.314*293) = 1.2007215..., not its rounding 1.200722
     for e, w, erg, wy, bvk in [('0.4', '0.5', '10980.757586', '13687.241720', '12255.452941'),
                                ('0.6', '0.5', '3720.505057', '3472.068062', '4188.344370'),
                                ('0.8', '0.5', '960.252529', '884.654004', '1147.828255'),
@@ -460,11 +464,11 @@ def run_checks():
         st = (ef, eps, ww, rho, mu, d, Re, Fraction(str(Re)))
         close(law_ergun(*st)[1], erg, what='Ergun dim'); close(law_wenyu_gidaspow(*st)[1], wy, what='WY dim')
         close(law_beetstra(*st)[1], bvk, what='BVK dim'); nchk += 3
-    # --- anchors note appendix (pressure-gradient beta, air 1.2/1.8e-5, d 5e-4, w 0.5)
+    # --- the codes' re-evaluation (pressure-gradient beta, air 1.2/1.8e-5, d 5e-4, w 0.5)
     appendix = [
         (law_ergun, ['133.4', '960', '3720', '8415']),
         (law_wenyu_gidaspow, ['148.5', '884.5', '3471', '9457']),
-        # the appendix prints 960 (= Ergun) at eps = 0.8, i.e. MFiX's "Ergun if eps <= 0.8" rule; the
+        # MFiX's "Ergun if eps <= 0.8" rule gives 960 (= Ergun) at eps = 0.8; the
         # project uses OpenFOAM's ">= 0.8 -> Wen-Yu" rule, so the expected value there is Wen-Yu's 884.5
         (law_gidaspow_switched, ['148.5', '884.5', '3720', '8415']),
         (law_gidaspow_blended, ['148.4', '922.2', '3718', '8419']),
@@ -483,7 +487,7 @@ def run_checks():
     # Tenneti: other conventions at phi = 0.4 (MFX 6897, OF 3540) confirm the WAL choice is eps * MFX
     b_wal = beta(law_tenneti, '0.6', '1.2', '1.8e-5', '5e-4', w='0.5')[1]
     close(b_wal / M('0.6'), '6897', what='Tenneti MFX'); nchk += 1
-    # seed002 2.2: phi = 0.3, Re = 10, mu 1.8e-5, d 5e-4 -> 2253.310967
+    # seed 002 Sec. II.D conversion: phi = 0.3, Re = 10, mu 1.8e-5, d 5e-4 -> 2253.310967
     close(18 * M('1.8e-5') * M('0.7') * M('0.3') * F_beetstra(M('0.3'), M(10)) / M('5e-4') ** 2, '2253.310967',
           what='BVK 2.2'); nchk += 1
     # identities: WenYuGidaspow == Lewis1949 (both conventions)
@@ -522,7 +526,7 @@ def poly_species(phis, ds, rho, mu, w):
 
 def poly_checks():
     n = 0
-    # seed002 note sec. 2.8 table
+    # Sauter mean, y_i, model-B f_i and sum x_i f_i/y_i^2 of two bidisperse mixtures
     for phis, ds, dref, yref, fref, sref in [
         (('0.2', '0.2'), ('5e-4', '2e-3'), '8.0e-4', ('0.625', '2.5'), ('0.540625', '4.6'), '1.06'),
         (('0.3', '0.1'), ('1e-3', '2e-3'), '1.142857143e-3', ('0.875', '1.75'), ('0.856975', '2.4808'), '1.042')]:

@@ -12,7 +12,10 @@ Dallavalle, Schiller-Naumann), homogeneous bed expansion (seed 000 eq 3.28) for 
 drag laws and Richardson-Zaki, and minimum fluidization (Ergun, Wen & Yu 1966).
 
 The drag laws are imported from drag_reference.py (same folder).  mpmath, 40 digits.
-Asserts the [checked] numbers printed in /work/shared/notes/seed000-closures.md.
+Asserts, before writing, numbers computed independently of it: seed 000's Table 4.4 (the
+R-Z column, and W&Y and Ergun columns reproduced to half a unit of their 3rd decimal by an
+independent double-precision evaluation of eq. 3.28 made when the thesis was read), and that
+evaluation's terminal velocities, R-Z voidages and Ergun u_mf (seed 000 Secs. 3.4.4.1, 4.3).
 Run with Debian's python: /usr/bin/python3 settling_reference.py  (prints one line)
 """
 import os
@@ -29,7 +32,9 @@ import drag_reference as dr  # noqa: E402
 mp.dps = 40
 M, out, close, G = dr.M, dr.out, dr.close, dr.G
 
-# Table 4.3 of seed 000 (system 3 with d = 5.21 mm, the misprint fixed: note sec. 8.2),
+# Table 4.3 of seed 000 (system 3 with d = 5.21 mm: the printed 521 um gives a Dallavalle
+# u_t of 0.0661 m/s, below every velocity of Table 4.4, and Re ~ 4-10 where the text says
+# inertial; with 5.21 mm, Re ~ 400-960 and Table 4.4 is reproduced),
 # plus the sec. 4.3 gas example and an air/glass system.
 SYSTEMS = {
     1: ('998', '1e-3', '2780', '253e-6'),
@@ -191,7 +196,8 @@ def props(t):
 # ----------------------------------------------------------------------------
 def checks():
     n = 0
-    # terminal velocities (seed000 note sec. 6.5, 8.1, 8.2, 8.6)
+    # Dallavalle terminal velocities: Table 4.3 systems 1-3, the Sec. 4.3 gas example, the
+    # Sec. 4.6.3 system and the Richardson & Zaki (1954) liquid of eq. 4.4
     for p, ut, Ret, ne in [(SYSTEMS[1], '0.033827', '8.5411396', '3.6805'),
                            (SYSTEMS[2], '0.051804', '19.42', '3.3164'),
                            (SYSTEMS[3], '0.4120', '2157', '2.4426'),
@@ -205,12 +211,15 @@ def checks():
         assert abs(M('0.75') * dr.cdre_dv(R) * R - archimedes(*pp)) < mpf(10) ** -30 * archimedes(*pp)
         n += 4
     close(archimedes(*props(SYSTEMS[1])), '282.5328'); n += 1
-    # R-Z voidages quoted in the note
+    # R-Z voidages: the gas example (h = 0.45 m from 0.30 m at 0.4, seed 000 eq. 4.5), the
+    # R&Z liquid (h = 0.400 m), system 1 at the velocities of the Sec. 4.5 transients
     close(expansion_rz(GAS_EXAMPLE, '5.77e-2'), '0.6000', what='gas eps_RZ'); n += 1
     close(expansion_rz(('2170', '1.61e-3', '2620', '230e-6'), '4.70e-4'), '0.5504', what='R&Z eps'); n += 1
     close(expansion_rz(SYSTEMS[1], '1.50e-2'), '0.8018'); close(expansion_rz(SYSTEMS[1], '2.72e-3'), '0.5042'); n += 2
     close(expansion_rz(SYSTEMS[1], '5.28e-3'), '0.6037180'); n += 1
-    # Table 4.4 reproduction (note sec. 8.2), +-0.0005 against the note's 3-decimal numbers
+    # seed 000 Table 4.4 reproduced: R-Z against the thesis's column, and R-Z, W&Y (alpha 2.70,
+    # Schiller-Naumann) and Ergun against an independent evaluation printed to 3 decimals (+-0.0005);
+    # W&Y and Ergun differ from the thesis's CFD columns by up to 0.014 for system 1
     rz_thesis = {1: ['0.504', '0.604', '0.703', '0.802'], 2: ['0.591', '0.630', '0.692', '0.799', '0.835'],
                  3: ['0.504', '0.521', '0.584', '0.682', '0.720']}
     rz_note = {1: ['0.504', '0.604', '0.703', '0.802'], 2: ['0.591', '0.630', '0.692', '0.800', '0.835']}
@@ -222,8 +231,8 @@ def checks():
     for s, us_list in TABLE44.items():
         for j, us in enumerate(us_list):
             erz = expansion_rz(SYSTEMS[s], us)
-            # "+-0.001" in the note means one unit in the thesis's third decimal: system 3 at
-            # u = 0.184 gives 0.71894 against the printed 0.720 (difference 0.0011)
+            # R-Z reproduces the thesis to one unit of its third decimal (+-0.0015 here): system
+            # 3 at u = 0.184 gives 0.71894 against the printed 0.720 (difference 0.0011)
             close(erz, rz_thesis[s][j], tol=M('0.0015'), what='RZ vs thesis')
             n += 1
             if s in rz_note:
@@ -236,7 +245,7 @@ def checks():
             if s in dfsn_note:
                 close(expansion_voidage(dr.law_difelice_sn, SYSTEMS[s], us)[0], dfsn_note[s][j], what='DF-SN')
                 n += 1
-    # minimum fluidization, gas example: 8.731e-3 m/s (note sec. 3 and 8.1)
+    # minimum fluidization, gas example: 8.731e-3 m/s (seed 000 Sec. 4.3.3 quotes 8.73e-3 m/s)
     rf, mu, rp, d = props(GAS_EXAMPLE)
     close(remf_ergun(archimedes(rf, mu, rp, d), M('0.4')) * mu / (rf * d), '8.731e-3', what='u_mf'); n += 1
     # exponent limits

@@ -11,10 +11,11 @@ Writes (next to this file):
                                    for the F&G, J&F and M&L stability functions
   stability_curve_reference.csv    u_k, u_d, K and S along voidage for four systems
 
-Formulas, sources and conventions: README.md (same folder) and
-/work/shared/notes/seed000-closures.md secs 7, 8.4-8.6, 10, 11.  mpmath, 40 digits; inputs
-are exact decimal strings; output nstr(x, 17).  The script asserts the [checked] numbers of
-the note before writing anything.  It never reads the C++ code.
+Formulas, sources and conventions: README.md (same folder); seed 000 secs 3.5, 4.6.1-4.6.3,
+Tables 4.5 and 4.6.  mpmath, 40 digits; inputs are exact decimal strings; output nstr(x, 17).
+Before writing anything the script asserts seed 000's Table 4.6 and sec. 4.6.3 numbers, and
+the numbers of an independent double-precision evaluation of the same equations made when
+the thesis was read (each quoted where it is checked).  It never reads the C++ code.
 
 Run with Debian's python:  /usr/bin/python3 stability_reference.py   (prints one line)
 """
@@ -46,7 +47,7 @@ def xfun(R):
 
 
 def N_fun(R):
-    """dn_e/dRe*, simplified form (note sec. 6.3): -0.315 Re*^-1/4 / (1 + x)^2"""
+    """dn_e/dRe* of seed 000 eq 3.24, simplified: -0.315 Re*^-1/4 / (1 + x)^2, 0.315 = 1.8 * 0.175"""
     x = xfun(R)
     return -M('0.315') * R ** M('-0.25') / (1 + x) ** 2
 
@@ -114,7 +115,9 @@ def fhat(rf, mu, R):
 
 
 # ----------------------------------------------------------------------------
-# material systems for the stability analysis (seed 000 Tables 4.5, 4.6; note sec. 8.5, 8.6)
+# material systems for the stability analysis (seed 000 Tables 4.5, 4.6 and sec. 4.6.3). The
+# thesis gives no gas properties: air 1.205 kg/m3, 1.81e-5 Pa s (powders 1-10, 13) and N2 at
+# 20 C 1.165 kg/m3, 1.76e-5 Pa s (11, 12, 14, 15) reproduce Table 4.6 to +-0.001
 # ----------------------------------------------------------------------------
 AIR = ('1.205', '1.81e-5')
 N2_20C = ('1.165', '1.76e-5')
@@ -145,7 +148,8 @@ SEC463 = ('1.19', '1.82e-5', '2500', '71.5e-6')
 
 
 def n2_ideal_gas(T_celsius):
-    """N2 at 101325 Pa: ideal-gas density, Sutherland viscosity (note sec. 8.5)"""
+    """N2 at 101325 Pa: ideal-gas density, Sutherland viscosity (mu0 1.663e-5 Pa s, T0 273.15 K,
+    S 107 K); reproduces the 100 C rows of Table 4.6 and drifts low above"""
     T = M(str(T_celsius)) + M('273.15')
     rho = M('101325') * M('0.0280134') / (M('8.314462618') * T)
     T0, S = M('273.15'), M('107')
@@ -293,7 +297,7 @@ def checks_elastic():
         assert abs(Ns - N_table(R)) < tiny(32) * abs(Ns)
         assert abs(Ns - diff(n_e, R)) < tiny(28) * abs(Ns)
         n += 2
-    # note sec. 7.3 (3.112): E_r^e/E_j = H/(-4.8/eps), printed to 5 decimals
+    # eq. 3.112: E_r^e/E_j = H/(-4.8/eps), an independent evaluation printed to 5 decimals
     ratio_table = {'1e-10': ('1.00000', '1.00000'), '1e-3': ('1.00241', '1.00345'), '1': ('0.89187', '1.00867'),
                    '10': ('0.74135', '0.92855'), '100': ('0.77793', '0.88206'), '1e4': ('0.96329', '0.96904'),
                    '1e12': ('1.00000', '1.00000')}
@@ -306,7 +310,8 @@ def checks_elastic():
         for R in ['1e-30', '1e40']:
             assert abs(H_fun(M(e), M(R)) * M(e) / M('4.8') + 1) < tiny(6)
             n += 1
-    # note sec. 6.4 table: D, N, C, H at (eps, Re) with Re* from the implicit relation
+    # D, N, C, H at (eps, Re) with Re* from the implicit relation (eqs. 3.53, 3.100-3.112): an
+    # independent evaluation printed to 6 digits
     tab = [('0.40', '0.01', '0.905177', '-0.278698', '0.860084', '-10.672887'),
            ('0.40', '1', '0.627469', '-0.0205653', '0.721722', '-8.158258'),
            ('0.40', '10', '0.408833', '-0.00173338', '0.838380', '-9.085732'),
@@ -334,7 +339,7 @@ def checks_elastic():
         close(D_fun(R), Dr, what='D'); close(N_fun(R), Nr, what='N')
         close(C_fun(eps, R), Cr, what='C'); close(H_fun(eps, R), Hr, what='H')
         n += 5
-    # 0 < C <= 1 and H < 0 (note sec. 7.3)
+    # 0 < C <= 1 and H < 0 (C = 1/(1 + Re* N ln eps) with Re* N < 0, ln eps <= 0)
     for e in ['0.3', '0.5', '0.9', '1']:
         for R in ['1e-6', '10', '1e6']:
             c = C_fun(M(e), M(R))
@@ -344,7 +349,7 @@ def checks_elastic():
 
 
 def checks_system1():
-    """note sec. 6.5: system 1 of Table 4.3 at u_s = 5.28e-3"""
+    """system 1 of seed 000 Table 4.3 at u_s = 5.28e-3 m/s (an independent evaluation)"""
     n = 0
     s = System(M('998'), M('1e-3'), M('2780'), M('253e-6'))
     us = M('5.28e-3')
@@ -359,7 +364,7 @@ def checks_system1():
     close(s.K(eps), '1240.66', what='K'); close(s.K(eps, with_C=False), '1521.14', what='K without C')
     assert abs(s.K_numeric(eps) / s.K(eps) - 1) < tiny(25)
     n += 12
-    # note sec. 8.4: (4.26) omits C.  Off equilibrium (water rho 1000, mu 1e-3, d 500 um):
+    # eq. 4.26 as printed omits C.  Off equilibrium (water rho 1000, mu 1e-3, d 500 um):
     # A = dF1/dv = -(1-eps) 6/(pi d^3) dF^/dU = A_printed * C, A_printed = -(1-eps) 6 F^/(pi d^3) (2-D)/U
     for e_s, U_s, Anum, Apr in (('0.45', '1e-4', '-1.5163e6', '-1.8623e6'), ('0.5', '1e-3', '-8.237e5', '-1.075e6')):
         ew, Uw, rw, mw, dw = M(e_s), M(U_s), M('1000'), M('1e-3'), M('500e-6')
@@ -381,7 +386,7 @@ def checks_system1():
 
 
 def checks_stability(results):
-    """results[(case, model)] = (roots, em, Smax); asserts note secs 8.5 and 8.6"""
+    """results[(case, model)] = (roots, em, Smax); asserts Table 4.6 and sec. 4.6.3"""
     n = 0
     failures = []
     cases = {c[0]: c for c in case_list()}
@@ -390,7 +395,7 @@ def checks_stability(results):
         return results[(case, model)][0][0]
 
     # (a) Table 4.6 rows at 20 degC (powders 1-9, 11-15) and 12/13 at 100 degC: +-0.001.
-    # The note's "+-0.001" holds only after rounding the root to the printed 3 decimals for four
+    # "+-0.001" holds only after rounding the root to the printed 3 decimals for four
     # N2 rows (rho_f 1.165, mu_f 1.76e-5); unrounded they miss by 0.0011-0.0012.  They are listed
     # here explicitly with their own bound (README, "Disagreements"); every other row is strict.
     known = {('powder11_20C', 'mazzei_lettieri'): '0.00124', ('powder12_20C', 'jean_fan'): '0.00117',
@@ -410,10 +415,10 @@ def checks_stability(results):
             assert abs(round(float(r), 3) - float(th)) < 0.0010001
             n += 1
     assert not failures, ['%s %s %s vs %s' % (c, m, nstr(r, 6), nstr(t, 3)) for c, m, r, t in failures]
-    # (b) the note's own reproduction numbers (half a unit of the printed 3rd decimal)
+    # (b) the independent evaluation's numbers (half a unit of the printed 3rd decimal)
     for c, vals in [('powder1_20C', ('0.358', '0.421', '0.401')), ('powder5_20C', ('0.440', '0.497', '0.485')),
                     ('powder9_20C', ('0.606', '0.653', '0.652')), ('powder12_20C', ('0.484', '0.537', '0.530')),
-                    # the note prints 0.477 (= Table 4.6) for powder 13 M&L; the root is 0.47633
+                    # it printed 0.477 (= Table 4.6) for powder 13 M&L; the root is 0.47633
                     ('powder13_20C', ('0.430', '0.485', '0.476')), ('powder12_100C', ('0.512', '0.563', '0.559')),
                     ('powder13_100C', ('0.452', '0.505', '0.500'))]:
         for m, v in zip(MODELS, vals):
@@ -425,7 +430,8 @@ def checks_stability(results):
             continue
         assert len(roots) == 2 and roots[0] < em < roots[1] and Smax > 0, (c, m)
         n += 1
-    # (d) powder 10 (note sec. 8.5)
+    # (d) powder 10: F&G has roots 0.855 (Table 4.6) and 0.907; J&F and M&L have none, and the
+    # table's 0.896 and 0.902 sit at the maximum of S
     roots, em, Smax = results[('powder10_20C', 'foscolo_gibilaro')]
     close(roots[0], '0.855', what='p10 F&G'); close(roots[1], '0.907', what='p10 F&G 2nd'); n += 2
     for m, smax in (('jean_fan', '-0.046'), ('mazzei_lettieri', '-0.054')):
@@ -456,7 +462,7 @@ def checks_stability(results):
 
 
 def checks_variants():
-    """note sec. 8.5/8.6 side claims: C = 1 variant, rho 1.2/mu 1.8e-5, powder 13 with N2, R-Z"""
+    """side claims: C = 1 variant, rho 1.2/mu 1.8e-5, powder 13 with N2, R-Z (independent evaluation)"""
     n = 0
     # M&L without C: powder 1 -> 0.421, sec. 4.6.3 -> 0.4608 and 1.02 cm/s
     d, rp = POWDERS[1]
