@@ -20,12 +20,15 @@ Writes (next to this file):
       d_solid_fraction,d_granular_temperature,d_beta,d_slip,d_divergence,d_deviatoric_contraction
 
 Formulas, sources, conventions and the list of seed misprints: README.md (same folder,
-section "KTGF") and /work/shared/notes/seed004-ktgf.md, seed001-niemi.md sec. 5,
-anchors-closures.md secs 1c, 2.13-2.17.  mpmath, 40 digits; inputs are exact decimal
+section "KTGF"); seeds 001 (sec. 5, eqs. 20-41), 002 (sec. IV), 004 (the kinetic-theory and
+friction slides) and the forms OpenFOAM and MFiX implement.  mpmath, 40 digits; inputs are exact decimal
 strings; output nstr(x, 17).  Every partial derivative is computed independently with
 mpmath.diff of the value function (never by hand); for a piecewise function mpmath.diff is
-applied to the branch active at the state (README: "branches").  The script asserts the notes'
-[checked] numbers, the seed misprints and the limits before writing anything.  It never
+applied to the branch active at the state (README: "branches").  Before writing anything the
+script asserts the numbers of an independent double-precision evaluation of the seeds'
+formulas made when the seeds were read (6 significant figures, or double-precision digits
+for seed 001's closures), that every seed misprint differs from the corrected form, and the
+limits.  It never
 reads the C++ code under include/.
 
 Run with Debian's python:  /usr/bin/python3 ktgf_reference.py   (prints one line)
@@ -87,7 +90,7 @@ def g0_cs(p, pmax=None):
 
 
 def g0_lun_savage(p, pmax):
-    """Lun & Savage (1986): (1 - phi/phi_max)^(-2.5 phi_max) (anchors 2.13)"""
+    """Lun & Savage (1986): (1 - phi/phi_max)^(-2.5 phi_max) (OpenFOAM LunSavage)"""
     return (1 - p / pmax) ** (-M('2.5') * pmax)
 
 
@@ -113,7 +116,7 @@ def g0_ma_ahmadi(p, pmax=MA_PMAX, c3=MA_C[2]):
 
 
 def g0_lathouwers_bellan(p, pmax):
-    """seed 004 h_ik, monodisperse, third term corrected (note 1.8):
+    """seed 004 h_ik, monodisperse, third term corrected to 8 r^2 xi^2/(1-x)^3 (Mansoori et al. 1971):
     1/(1-x) + 1.5 phi/(1-x)^2 + 0.5 phi^2/(1-x)^3, x = phi/phi_max"""
     x = 1 - p / pmax
     return 1 / x + M('1.5') * p / x ** 2 + M('0.5') * p ** 2 / x ** 3
@@ -277,7 +280,7 @@ def hs_lambda(p, d, L):
 
 
 def mu_hs_kin(p, T, e, d, r, g, L):
-    """OpenFOAM HrenyaSinclairViscosity minus the Gidaspow collisional term (anchors 2.15)"""
+    """OpenFOAM HrenyaSinclairViscosity minus the Gidaspow collisional term"""
     lam = hs_lambda(p, d, L)
     sp = sqrt(pi)
     return r * d * sqrt(T) * (
@@ -346,7 +349,8 @@ def theta_eq(mu_fun, p, e, d, r, g, gdot, K=0):
 
 
 # ---------------------------------------------------------------------------
-# seed-004 class-pair closures (note 1.9), used only for assertions
+# seed-004 class-pair closures (slide "Granular pressure and transport coefficients", contact
+# distance sigma_ik = sum of the radii), used only for assertions
 # ---------------------------------------------------------------------------
 def s004_pair(ai, ak, di, dk, ri, rk, Ti, Tk, e, h):
     Vi, Vk = pi * di ** 3 / 6, pi * dk ** 3 / 6
@@ -379,7 +383,7 @@ def h_lb_mix(alphas, ds, pmax, i, k):
 
 
 # ============================================================================
-# assertions: the notes' checked numbers, misprints, limits
+# assertions: independently evaluated numbers, misprints, limits
 # ============================================================================
 def check_notes():
     e, T, d, r = M('0.9'), M('0.01'), M('500e-6'), M('2500')
@@ -413,7 +417,7 @@ def check_notes():
         chk(ma_t3(p), ma, what='lim ma ' + ps)
         chk(g0_lathouwers_bellan(p, M('0.64')), lb, what='lim lb ' + ps)
     chk(g0_ogawa(M('1e-6'), M('0.63')), '1.0118', what='ogawa 1e-6')
-    # Percus-Yevick (= Lebowitz, one class): the note's table and limits column
+    # Percus-Yevick (= Lebowitz, one class): values and limits, independent evaluation
     for ps, v in (('0.3', '2.34694'), ('0.55', '6.29630'), ('1e-6', '1.00000'), ('1e-3', '1.00250'),
                   ('0.01', '1.02541'), ('0.10', '1.29630'), ('0.50', '5.00000'), ('0.60', '8.12500'),
                   ('0.62', '9.07202'), ('0.629', '9.55021')):
@@ -426,7 +430,7 @@ def check_notes():
         chk(diff(g0_cs, p), dcs, what='dCS')
         chk(diff(lambda q: g0_ogawa(q, M('0.63')), p), dog, what='dOgawa')
         chk((M('2.5') - p) / (1 - p) ** 4, dcs)
-    # seed 001 sec 12.4 g0 table (double precision digits)
+    # Ogawa g0 of seed 001 eq. 24 (phi_max 0.63, its Table 1): independent evaluation, double-precision digits
     for ps, v in (('0.01', '1.3356766688969133'), ('0.15', '2.630181450574105'), ('0.2', '3.1463962027326726'),
                   ('0.3', '4.564056511625056'), ('0.5', '13.48715411'), ('0.61', '93.49283105767604'),
                   ('0.62', '187.99644438544777')):
@@ -595,7 +599,8 @@ def check_notes():
             res = mu_gid(p, th, e, d, r, g) * gd ** 2 - gam_lun(p, th, e, d, r, g) - 3 * K * th
             assert abs(res) < M('1e-30') * mu_gid(p, th, e, d, r, g) * gd ** 2 and th > 0
 
-    # --- seed 001 sec 12.4 (e = 0.9, Ogawa 0.63; double-precision digits)
+    # --- seed 001 eqs. 21-34 (e = 0.9, Ogawa 0.63 as in its Table 1) at three states with the
+    # thesis's mean diameters 279 and 291 um: independent evaluation, double-precision digits
     states = {'A': ('0.3', '0.01', '279e-6'), 'B': ('0.15', '0.05', '279e-6'), 'C': ('0.5', '1e-3', '291e-6')}
     tab = {'A': ('46.15050170899907', '38.710501708999075', '48.8946965357885', '0.08124503003782461',
                  '0.04662042742594844', '0.026951793486765043', '0.13540838339637432', '0.15479001404533332',
@@ -676,7 +681,7 @@ def check_misprints_and_limits():
             differs(p_s002_eq54_printed(p, T, e, d, r, g), p_s002_eq54_correct(p, T, e, d, r, g), 'M4')
             assert abs(p_s002_eq54_correct(p, T, e, d, r, g) - p_lun(p, T, e, d, r, g)) < M('1e-35') * p_lun(
                 p, T, e, d, r, g)
-            # A1 (anchor, not a seed): old OpenFOAM HrenyaSinclairConductivity without g0
+            # A1 (a code, not a seed): old OpenFOAM HrenyaSinclairConductivity without g0
             differs(k_hs(p, T, e, d, r, g, M('0.1'), with_g0=False), k_hs(p, T, e, d, r, g, M('0.1')), 'A1')
             n += 1
         # M5 seed 004 h_ik third term (printed 8 r^2 xi/(1-x)^2 vs 8 r^2 xi^2/(1-x)^3)
@@ -684,7 +689,7 @@ def check_misprints_and_limits():
     # at e = 1 the seed 001 eq 34 literal form stays positive (proves the typo)
     assert gam_s001_printed(M('0.3'), T, 1, d, r, g0_cs(M('0.3'))) > 0
 
-    # --- cross-checks of the factored forms against the expanded OpenFOAM forms (anchors 2.15)
+    # --- cross-checks of the factored forms against the expanded forms OpenFOAM writes
     sp = sqrt(pi)
     for ps in ('1e-4', '0.1', '0.45', '0.6'):
         for es in ('0.9', '0.99'):
@@ -798,7 +803,7 @@ def p_fric_jj(p, pmin, pmax, fr, a, b, br=None):
 
 
 def p_fric_jj_plain(p, pmin, pmax, fr, a, b):
-    """the uncontinued formula (the notes' tables)"""
+    """the uncontinued formula (as the independent evaluation tabulates it)"""
     return mpf(0) if p <= pmin else fr * (p - pmin) ** a / (pmax - p) ** b
 
 
@@ -968,8 +973,9 @@ def check_continuation():
                 for k in range(i, len(ds_)):
                     c1(lambda t, pl=None: gmix_modified_mansoori([t * x for x in fr], ds_, i, k, pmx, pl),
                        pcx(pmx), 'modMansoori')
-    # the notes' 0.629 values (Ogawa 0.63; phi_c = 0.62) are the plain formula, not the continued one
-    differs(M('1889.00'), g0c_ogawa(M('0.629'), M('0.63')), 'note 3.1 Ogawa(0.63) at 0.629 is uncontinued')
+    # the independent evaluation's 0.629 values (Ogawa 0.63; phi_c = 0.62) are the plain formula,
+    # not the continued one
+    differs(M('1889.00'), g0c_ogawa(M('0.629'), M('0.63')), 'plain Ogawa(0.63) at 0.629 is uncontinued')
     chk(g0c_ogawa(M('0.62'), M('0.63')), '187.99644438544777', what='Ogawa at phi_c')
 
 
@@ -977,7 +983,7 @@ def check_mixture():
     u = M('1e-6')
     tol = M('1e-30')
     rho = M(2500)
-    # --- seed004 note 3.9 (seed 000 layers): Lebowitz g_12, K' eq 91, zeta eq 6.15 = pi K'
+    # --- seed 000's layers (Ch. 6): Lebowitz g_12, seed 001 K' eq 91, zeta eq 6.15 = pi K'
     for (d1, d2, f1, f2), gv, zv, kv in ((('75', '103', '0.262', '0.338'), '8.01292', '1.92546e7', '6.12895e6'),
                                          (('240', '355', '0.380', '0.220'), '8.41492', '5.51636e6', '1.75591e6'),
                                          (('165', '190', '0.320', '0.280'), '8.15141', '1.05183e7', '3.34806e6')):
@@ -1022,7 +1028,8 @@ def check_mixture():
                     a, b = f(ph2, ds2, i, k, pmx), f(ph3, ds3, i3, k3, pmx)
                     assert abs(a - b) <= tol * a
                     NCHK[0] += 1
-    # modified Mansoori = seed 004 h_ik (corrected; radii form) below phi_c, and note 3.7 values
+    # modified Mansoori = seed 004 h_ik (corrected; radii form) below phi_c, and its values in a
+    # binary example (phi 0.30/0.15, d 500 um equal and 500/1000 um), independent evaluation
     dd5 = M('500e-6')
     chk(gmix_modified_mansoori([M('0.30'), M('0.15')], [dd5, dd5], 0, 1, M('0.64')), '14.8968', what='3.7 h')
     for (i, k), v in (((0, 0), '12.4380'), ((0, 1), '16.6555'), ((1, 1), '26.8821')):
@@ -1041,7 +1048,8 @@ def check_mixture():
 
 
 def check_friction():
-    # --- seed004 note 3.8 (Fr 0.005, exponents 2 (numerator) and 5 (denominator), phi_max 0.64, 25 deg)
+    # --- seed 004 friction slide (Fr 0.005, exponents 2 (numerator) and 5 (denominator), phi_max 0.64,
+    # 25 deg): independent evaluation
     fr, pmax, ang = M('0.005'), M('0.64'), M(25)
     for pmin, ps, pf, m1, m10 in (('0.55', '0.56', '0.152588', '0.0644864', '0.00644864'),
                                   ('0.55', '0.60', '122.070', '51.5891', '5.15891'),
@@ -1106,7 +1114,8 @@ def check_friction():
 def check_exchange():
     rhog, mug, w, d, e, r = M('1.2'), M('1.8e-5'), M('0.5'), M('500e-6'), M('0.9'), M(2500)
     T = M('0.01')
-    # --- seed004 note 3.11 (-3 K Theta with Ergun and Wen-Yu; Gidaspow's switch at phi = 0.2)
+    # --- -3 K Theta with Ergun and Wen-Yu (seed 001 eq. 41; Gidaspow's switch at phi = 0.2):
+    # air 1.2 kg/m3, 1.8e-5 Pa s, w 0.5 m/s, d 500 um, independent evaluation
     for ps, ke, se, kw, re, cd, sw, pick in (('0.10', '330.000', '-9.90000', '336.510', '15.0000', '3.14236',
                                               '-10.0953', 'wy'),
                                              ('0.30', '2018.57', '-60.5571', '1812.02', '11.6667', '3.72573',
@@ -1128,7 +1137,8 @@ def check_exchange():
     KA = ergun_K(M('0.3'), M('279e-6'), M('1.225'), M('1.7894e-5'), 1)
     chk(KA, '6738.485456617611', what='12.4 K_gs A')
     chk(x_sink(T, KA), '-202.15456369852834', what='12.4 phi_gs A')
-    # --- note 3.12 through spec A (simple shear: D':D' = gdot^2/2, div u = 0, beta = Ergun K)
+    # --- algebraic Theta through spec A (simple shear: D':D' = gdot^2/2, div u = 0, beta = Ergun K):
+    # the root of mu(Theta) gdot^2 = gamma(Theta) + 3 K Theta, independent evaluation
     for (ps, gk), vals in {('0.3', 'og'): ('2.62304e-7', '1.19314e-8', '2.62304e-5', '1.68277e-5'),
                            ('0.3', 'cs'): ('3.21694e-7', '5.60634e-9', '3.21694e-5', '1.55321e-5'),
                            ('0.55', 'og'): ('2.15042e-7', '6.67146e-8', '2.15042e-5', '1.90010e-5'),
