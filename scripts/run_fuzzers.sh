@@ -21,7 +21,8 @@ if ! command -v clang++ >/dev/null; then
   exit 1
 fi
 echo "== fuzzers: build ($build)"
-cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DFLUIDBED_BUILD_FUZZERS=ON -DFLUIDBED_BUILD_TESTS=OFF \
+cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DFLUIDBED_BUILD_FUZZERS=ON -DFLUIDBED_WARNINGS_AS_ERRORS=ON \
+  -DFLUIDBED_BUILD_TESTS=OFF \
   -DFLUIDBED_BUILD_EXAMPLES=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)" --target "${fuzzers[@]}"
 

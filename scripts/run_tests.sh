@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs the whole test suite: a debug build with warnings as errors, the same
+# Builds and runs the whole test suite: a debug build with warnings as errors
+# (FLUIDBED_WARNINGS_AS_ERRORS, on in every build of this script, off by default for users), the same
 # suite under AddressSanitizer + UndefinedBehaviorSanitizer, and with -O3 -march=native
 # (floating-point contraction on, as GCC does by default where the target has FMA); and
 # checks that the reference tables in tests/reference/ are what their mpmath generators give;
@@ -24,7 +25,7 @@ fi
 gcc12_false_positives="-Wno-uninitialized -Wno-maybe-uninitialized -Wno-array-bounds -Wno-stringop-overread -Wno-restrict"
 for config in debug sanitize optimized; do
   echo "== tests: $config build"
-  options=(-DFLUIDBED_BUILD_TESTS=ON -DFLUIDBED_BUILD_EXAMPLES=ON)
+  options=(-DFLUIDBED_BUILD_TESTS=ON -DFLUIDBED_BUILD_EXAMPLES=ON -DFLUIDBED_WARNINGS_AS_ERRORS=ON)
   case $config in
     debug) options+=(-DCMAKE_BUILD_TYPE=Debug) ;;
     sanitize) options+=(-DCMAKE_BUILD_TYPE=Debug -DFLUIDBED_SANITIZE=ON) ;;

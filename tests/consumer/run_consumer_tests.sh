@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Builds tests/consumer against fluidbed in every supported way and runs it:
-#   package       cmake --install of the source tree into a private prefix, then
-#                 find_package(fluidbed 0.1 CONFIG REQUIRED)
+#   package       `cmake --install build --prefix P` (the prefix chosen at install time, not at
+#                 configure time), the tree then moved elsewhere, and
+#                 find_package(fluidbed 0.1 CONFIG REQUIRED) from the new place
 #   subdirectory  add_subdirectory(<source tree>)
 #   fetchcontent  FetchContent_Declare(fluidbed SOURCE_DIR <source tree>)
-#   pkg-config    g++ $(pkg-config --cflags fluidbed) against the installed prefix
+#   pkg-config    g++ $(pkg-config --cflags fluidbed) against the moved prefix (the .pc file
+#                 must be relocatable)
+#   drag only     configured and installed as on a machine with none of the optional packages
+#                 (no doctest, no Boost, no Eigen), then the drag + kinetic-theory consumer built
+#                 against it; the compiler's include trace must show neither Boost nor Eigen
 # Usage: run_consumer_tests.sh <fluidbed source dir> <scratch dir>
 set -euo pipefail
 source_dir=$(cd "$1" && pwd)
@@ -12,12 +17,12 @@ work=$2
 rm -rf "$work"
 mkdir -p "$work"
 consumer="$source_dir/tests/consumer"
-prefix="$work/prefix"
 
-echo "== install into $prefix"
-cmake -S "$source_dir" -B "$work/fluidbed" -G Ninja -DFLUIDBED_BUILD_TESTS=OFF -DFLUIDBED_BUILD_EXAMPLES=OFF \
-      -DCMAKE_INSTALL_PREFIX="$prefix" >/dev/null
-cmake --install "$work/fluidbed" >/dev/null
+echo "== configure with the defaults, install with --prefix, move the installed tree"
+cmake -S "$source_dir" -B "$work/fluidbed" -G Ninja -DFLUIDBED_BUILD_TESTS=OFF -DFLUIDBED_BUILD_EXAMPLES=OFF >/dev/null
+cmake --install "$work/fluidbed" --prefix "$work/installed_here" >/dev/null
+mv "$work/installed_here" "$work/moved_there"
+prefix="$work/moved_there"
 test -f "$prefix/include/fluidbed/fluidbed.hpp"
 test -f "$prefix/share/cmake/fluidbed/fluidbedConfigVersion.cmake"
 
@@ -39,9 +44,35 @@ if cmake -S "$work/too_new_src" -B "$work/too_new_build" -G Ninja -DCMAKE_PREFIX
   exit 1
 fi
 
-echo "== consumer: pkg-config"
-PKG_CONFIG_PATH="$prefix/share/pkgconfig" pkg-config --exists --print-errors fluidbed
-# shellcheck disable=SC2046
-g++ $(PKG_CONFIG_PATH="$prefix/share/pkgconfig" pkg-config --cflags fluidbed) "$consumer/main.cpp" -o "$work/pkgconfig_consumer"
+echo "== consumer: pkg-config from the moved prefix"
+export PKG_CONFIG_PATH="$prefix/share/pkgconfig"
+pkg-config --exists --print-errors fluidbed
+cflags=$(pkg-config --cflags fluidbed)
+case " $cflags " in
+  *" -I$prefix/"*) ;;
+  *) echo "pkg-config --cflags fluidbed does not point into the moved prefix $prefix: $cflags" >&2; exit 1 ;;
+esac
+# shellcheck disable=SC2086
+g++ $cflags "$consumer/main.cpp" -o "$work/pkgconfig_consumer"
 "$work/pkgconfig_consumer"
+
+echo "== consumer: drag and kinetic theory only, on a machine without doctest, Boost or Eigen"
+cmake -S "$source_dir" -B "$work/minimal" -G Ninja -DCMAKE_DISABLE_FIND_PACKAGE_doctest=ON \
+      -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON >"$work/minimal.log"
+cmake --build "$work/minimal" >/dev/null
+cmake --install "$work/minimal" --prefix "$work/minimal_prefix" >/dev/null
+if grep -q "eigen3" "$work/minimal_prefix/share/pkgconfig/fluidbed.pc"; then
+  echo "the pkg-config file of a build without Eigen requires eigen3" >&2
+  exit 1
+fi
+cmake -S "$consumer" -B "$work/minimal_package" -G Ninja -DFLUIDBED_CONSUME=package \
+      -DCMAKE_PREFIX_PATH="$work/minimal_prefix" >/dev/null
+cmake --build "$work/minimal_package" >/dev/null
+"$work/minimal_package/consumer"
+# -H lists every header the translation unit opens: none may come from Boost or Eigen.
+g++ -std=c++20 -H -fsyntax-only -I"$work/minimal_prefix/include" "$consumer/main.cpp" 2>"$work/minimal_headers.txt"
+if grep -E "/(boost|eigen3)/" "$work/minimal_headers.txt"; then
+  echo "the drag and kinetic-theory headers include Boost or Eigen (above)" >&2
+  exit 1
+fi
 echo "consumer tests passed"

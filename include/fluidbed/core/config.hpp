@@ -3,6 +3,19 @@
 
 #include <cassert>
 
+// C++20 is required (concepts, std::span, designated initializers, std::remove_cvref_t, …): say
+// so first, instead of hundreds of errors from the first C++20 construct. MSVC reports its
+// language level in _MSVC_LANG unless /Zc:__cplusplus is given.
+#if defined(_MSVC_LANG) && _MSVC_LANG > __cplusplus
+#define FLUIDBED_CPLUSPLUS _MSVC_LANG
+#else
+#define FLUIDBED_CPLUSPLUS __cplusplus
+#endif
+#if FLUIDBED_CPLUSPLUS < 202002L
+#error "fluidbed needs C++20: compile with -std=c++20 (or /std:c++20); with CMake, link fluidbed::fluidbed, which sets it"
+#endif
+#undef FLUIDBED_CPLUSPLUS
+
 // -ffast-math (through -ffinite-math-only) lets the compiler assume no value is NaN or ±∞,
 // which folds away the checks that turn such inputs into exceptions and statuses (checked
 // entry points, moment-inversion statuses, batched lane guards) and the infinities returned
