@@ -17,7 +17,7 @@ Fails (exit 1, listing every problem) when
   4. the docs cite a header or source path (in backticks, e.g. `drag/ergun.hpp`, or as a
      Markdown link target) that does not exist;
   5. a Markdown link `file.md#anchor` (or `#anchor`) names a heading that file does not have
-     (anchors as GitHub forms them).
+     (heading anchors as GitHub forms them).
 
 What counts as a public closure. The headers of the five closure families
 (drag/, settling/, elastic/, kinetic_theory/, moments/ under include/fluidbed/) are read
@@ -214,12 +214,13 @@ PATH_IN_BACKTICKS = re.compile(r"^[\w./-]+\.(?:hpp|cpp|py|md|txt|csv|sh|cmake)$"
 LINK_TARGET = re.compile(r"\]\(([^)\s#]*)(?:#([^)\s]*))?\)")  # (file, anchor); "(#anchor)" links its own file
 
 
-def heading_anchors(path):
-    """The anchors GitHub gives the headings of a Markdown file: lower case, characters other
-    than letters, digits, spaces, '-' and '_' dropped, spaces to '-', repeats suffixed -1, -2."""
-    anchors, seen = set(), {}
+def github_heading_slugs(lines):
+    """(index, anchor) of every heading among the lines of a Markdown file, with the anchor
+    GitHub gives it: lower case, characters other than letters, digits, spaces, '-' and '_'
+    dropped, spaces to '-', repeats suffixed -1, -2. (Also used by docs/doxygen_filter.py.)"""
+    slugs, seen = [], {}
     in_fence = False
-    for line in path.read_text(encoding="utf-8").split("\n"):
+    for index, line in enumerate(lines):
         if line.startswith("```"):
             in_fence = not in_fence
         m = None if in_fence else re.match(r"#{1,6}\s+(.*?)\s*#*\s*$", line)
@@ -229,8 +230,13 @@ def heading_anchors(path):
         slug = "".join(ch for ch in text if ch.isalnum() or ch in " -_").replace(" ", "-")
         count = seen.get(slug, 0)
         seen[slug] = count + 1
-        anchors.add(slug if count == 0 else f"{slug}-{count}")
-    return anchors
+        slugs.append((index, slug if count == 0 else f"{slug}-{count}"))
+    return slugs
+
+
+def heading_anchors(path):
+    """The anchors GitHub gives the headings of a Markdown file."""
+    return {slug for _, slug in github_heading_slugs(path.read_text(encoding="utf-8").split("\n"))}
 
 
 def doc_files(root):
