@@ -3,6 +3,7 @@
 the Markdown catalogue as they are, so that no source file has to carry Doxygen markup.
 
 Usage (Doxygen calls it): doxygen_filter.py FILE     writes the filtered FILE to stdout.
+                          doxygen_filter.py --self-test   checks the header rules on a sample.
 
 Headers (*.hpp):
   * the file's leading `//` block becomes its `\\file` documentation;
@@ -228,7 +229,56 @@ def filter_markdown(lines, relative):
     return out
 
 
+SELF_TEST_HEADER = """// fluidbed — a sample header.
+#pragma once
+namespace fluidbed::sample {
+
+// ------------------------------------------------ a section comment, followed by a blank line
+
+// A law, after van der Hoef et al. (2005):
+//   β = 18 μ_f ε φ F / d²
+// with <d> the Sauter mean.
+struct Law {
+  double margin = 0.01;  // the distance below φ_max
+                         // where the linear continuation starts
+  // The value.
+  double operator()(double x) const {
+    // inside a body: never documentation
+    return x;
+  }
+};
+
+}  // namespace fluidbed::sample"""
+
+SELF_TEST_EXPECTED = {  # line index -> filtered line
+    0: "/// a sample header. \\file",
+    4: "// ------------------------------------------------ a section comment, followed by a blank line",
+    6: "/// A law, after van der Hoef et al. (2005):",
+    7: "/// <pre>  β = 18 μ_f ε φ F / d²</pre>",
+    8: "/// with &lt;d&gt; the Sauter mean.",
+    10: "  double margin = 0.01;  ///< the distance below φ\\_max",
+    11: "                         ///< where the linear continuation starts",
+    12: "  /// The value.",
+    14: "    // inside a body: never documentation",
+}
+
+
+def self_test():
+    """Empty when the header rules above hold on a sample, one message per broken rule."""
+    lines = SELF_TEST_HEADER.split("\n")
+    filtered = filter_header(lines)
+    problems = [] if len(filtered) == len(lines) else [f"{len(lines)} lines became {len(filtered)}"]
+    for index, expected in SELF_TEST_EXPECTED.items():
+        if index < len(filtered) and filtered[index] != expected:
+            problems.append(f"line {index + 1}: {filtered[index]!r}, expected {expected!r}")
+    return problems
+
+
 def main(argv):
+    if argv[1:] == ["--self-test"]:
+        problems = self_test()
+        print("\n".join(problems) if problems else "doxygen_filter self-test OK")
+        return 1 if problems else 0
     path = Path(argv[1]).resolve()
     lines = path.read_text(encoding="utf-8").split("\n")
     if path.suffix == ".md":
