@@ -7,7 +7,9 @@
 //                  raw moments, the Jacobi matrix as a dense n×n MatrixXd, Eigen's dense
 //                  SelfAdjointEigenSolver<MatrixXd> (Householder tridiagonalization, then QR
 //                  accumulating every eigenvector), weights from row 0 of the eigenvectors
-//                  (anchors-moments note §1.3, §1.6, §6)
+//                  (OpenQBMM's per-cell univariateMomentSet and its dense EigenMatrix, a
+//                  JAMA/EISPACK tred2 + tql2 with every eigenvector; Uintah's CQMOM likewise
+//                  solves a dense Jacobi matrix)
 //   wheeler_ql     invert<N>(): Wheeler + closed form (n <= 2) or Golub–Welsch QL
 //   pd_ql          invert<N>() with product-difference
 //   wheeler_eigen  invert_eigen<N>(): Wheeler + Eigen's tridiagonal solver
@@ -23,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -137,17 +140,17 @@ struct Fixture {
 
   void batched(benchmark::State& state) {
     MomentBatch<double, N> in;
-    in.cells = cells;
-    for (int k = 0; k < 2 * N; ++k) in.moments[k] = fields[k].data();
+    for (int k = 0; k < 2 * N; ++k) in.moments[k] = fields[k];
     QuadratureBatch<double, N> out;
     for (int i = 0; i < N; ++i) {
-      out.nodes[i] = nodes.data() + std::size_t(i) * cells;  // node-major: nodes[i][c]
-      out.weights[i] = weights.data() + std::size_t(i) * cells;
+      out.nodes[i] = std::span<double>(nodes).subspan(std::size_t(i) * cells, cells);  // node-major: nodes[i][c]
+      out.weights[i] = std::span<double>(weights).subspan(std::size_t(i) * cells, cells);
     }
-    out.sizes = sizes.data();
-    out.status = status.data();
+    out.sizes = sizes;
+    out.status = status;
+    if (!invert_batched(in, out)) state.SkipWithError("invert_batched: arrays of different lengths");
     for (auto _ : state) {
-      invert_batched(in, out);
+      benchmark::DoNotOptimize(invert_batched(in, out));
       benchmark::DoNotOptimize(nodes.data());
       benchmark::DoNotOptimize(weights.data());
       benchmark::ClobberMemory();

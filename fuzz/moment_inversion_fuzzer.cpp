@@ -679,20 +679,21 @@ void batched_checks(Input& in, std::span<const T> base, Support support) {
   std::vector<T> fields(std::size_t(2 * N * cells)), x(std::size_t(N * cells), T(-7)), w(x);
   std::vector<int> sizes(std::size_t(cells), -1);
   std::vector<InversionStatus> status(std::size_t(cells), InversionStatus(-1));
+  const auto part = [cells](auto& all, int i) { return std::span(all).subspan(std::size_t(i * cells), std::size_t(cells)); };
   MomentBatch<T, N> batch;
-  batch.cells = std::size_t(cells);
   QuadratureBatch<T, N> out;
   for (int k = 0; k < 2 * N; ++k) {
-    batch.moments[k] = fields.data() + k * cells;
+    batch.moments[k] = part(fields, k);
     for (int c = 0; c < cells; ++c) fields[std::size_t(k * cells + c)] = cell[std::size_t(c)][k];
   }
   for (int i = 0; i < N; ++i) {
-    out.nodes[i] = x.data() + i * cells;
-    out.weights[i] = w.data() + i * cells;
+    out.nodes[i] = part(x, i);
+    out.weights[i] = part(w, i);
   }
-  out.sizes = sizes.data();
-  out.status = status.data();
-  invert_batched<T, N>(batch, out, support);
+  out.sizes = sizes;
+  out.status = status;
+  const bool inverted = invert_batched(batch, out, support);
+  FUZZ_CHECK(inverted, "invert_batched<%d>: refused %d cells of equal lengths", N, cells);
   for (int c = 0; c < cells; ++c) {
     const std::span<const T> m(cell[std::size_t(c)].data(), 2 * N);
     const InversionResult<T, N> r = invert<T, N>(m, {.support = support});

@@ -2,7 +2,6 @@
 // (eigen_backend.hpp): against the per-cell invert(), exact rules and the seeds' references.
 #include <doctest/doctest.h>
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -49,16 +48,15 @@ BatchResult<T, N> run_batched(const std::vector<Cell<T, N>>& cells, Support supp
   out.sizes.assign(count, -1);
   out.status.assign(count, InversionStatus::eigen_failure);
   MomentBatch<T, N> in;
-  in.cells = count;
-  for (int k = 0; k < 2 * N; ++k) in.moments[k] = fields[k].data();
+  for (int k = 0; k < 2 * N; ++k) in.moments[k] = fields[k];
   QuadratureBatch<T, N> q;
   for (int i = 0; i < N; ++i) {
-    q.nodes[i] = x[i].data();
-    q.weights[i] = w[i].data();
+    q.nodes[i] = x[i];
+    q.weights[i] = w[i];
   }
-  q.sizes = out.sizes.data();
-  q.status = out.status.data();
-  invert_batched(in, q, support);
+  q.sizes = out.sizes;
+  q.status = out.status;
+  REQUIRE(invert_batched(in, q, support));
   out.nodes.resize(count);
   out.weights.resize(count);
   for (std::size_t c = 0; c < count; ++c)

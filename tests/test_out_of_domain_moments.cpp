@@ -175,18 +175,17 @@ TEST_CASE("out of domain: batched inversion gives each bad cell the per-cell sta
   for (std::size_t c = 0; c < count; ++c)
     for (std::size_t k = 0; k < 2 * nodes; ++k) fields[k][c] = cells[c][k];
   MomentBatch<double, nodes> in;
-  in.cells = count;
-  for (std::size_t k = 0; k < 2 * nodes; ++k) in.moments[k] = fields[k].data();
+  for (std::size_t k = 0; k < 2 * nodes; ++k) in.moments[k] = fields[k];
   std::vector<int> sizes(count);
   std::vector<InversionStatus> status(count);
   QuadratureBatch<double, nodes> out;
   for (std::size_t i = 0; i < nodes; ++i) {
-    out.nodes[i] = x[i].data();
-    out.weights[i] = w[i].data();
+    out.nodes[i] = x[i];
+    out.weights[i] = w[i];
   }
-  out.sizes = sizes.data();
-  out.status = status.data();
-  invert_batched(in, out);
+  out.sizes = sizes;
+  out.status = status;
+  REQUIRE(invert_batched(in, out));
   for (std::size_t c = 0; c < count; ++c) {
     INFO("cell ", c);
     const InversionResult<double, nodes> single = invert<nodes>(cells[c]);

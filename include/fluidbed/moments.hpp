@@ -1,4 +1,9 @@
 // fluidbed — umbrella header for moment inversion (QMOM/DQMOM quadrature).
+//
+// It includes batched.hpp and eigen_backend.hpp, the two headers that need Eigen 3.4. A host
+// without Eigen includes the per-cell headers it uses instead (inversion.hpp, adaptive.hpp,
+// realizability.hpp, correction.hpp, moment_set.hpp, ...), which need only the standard
+// library and Boost.Math (moment_set.hpp's constants).
 #pragma once
 
 #include "moments/adaptive.hpp"

@@ -417,6 +417,13 @@ def tool_checks():
     close(z[0], mpf(1) / 2, mpf(10) ** -50, 'uniform m3=0 zeta_1')
     close(z[1], mpf(1) / 6, mpf(10) ** -50, 'uniform m3=0 zeta_2')
     close(z[2], mpf(-8) / 3, mpf(10) ** -50, 'uniform m3=0 zeta_3')
+    # the identities the library computes the Hankel determinants by, against det(), on a
+    # generic set and on a non-realizable one (a negative H_4)
+    for m in (moments_atoms([mpf(1), mpf(2), mpf(5)], [mpf('0.2'), mpf('0.5'), mpf('0.3')], 6),
+              [M(Fraction(1, k + 1)) if k != 3 else mpf(0) for k in range(8)]):
+        for k, h in enumerate(hankel_via_recurrence(m)):
+            close(h, hankel(m, k), mpf(10) ** -45, 'Hankel H_%d by the recurrence vs det' % k,
+                  atol=mpf(10) ** -55)
     # Hankel-form zeta == PD zeta == Wheeler zeta on a generic set (3-atom measure)
     m = moments_atoms([mpf(1), mpf(2), mpf(5)], [mpf('0.2'), mpf('0.5'), mpf('0.3')], 6)
     aw, bw = wheeler(m)
@@ -809,6 +816,7 @@ def case_seed003():
         for k in range(6):
             printed(log(m[k]) - 2 * log(m[k + 1]) + log(m[k + 2]), note_d2[p][k],
                     '%s ln M second difference %d (note 7.4)' % (case, k))
+        write_hankel(case, m)
         first = next((k + 1 for k, v in enumerate(zh) if v <= 0), 0)
         check(first == note_first[p], '%s first unrealizable zeta index %d' % (case, first))
         for N in range(1, 5):
@@ -830,6 +838,56 @@ def case_seed003():
                 for k, z in enumerate(zeta_from_rc(a, b)):
                     row(case, N, 'zeta', k + 1, z)
         row(case, 4, 'first_unrealizable_zeta_index', 0, first)
+
+
+def hankel_via_recurrence(m):
+    """H_0 .. H_{len(m)-1} from Wheeler's recurrence at 60 digits, by the identities the library
+    uses (H_2i = H_2i-2 m_0 beta_1..beta_i, H_2i+1 = (-1)^(i+1) p_i+1(0) H_2i): asserted
+    against det() by the caller."""
+    alpha, beta = wheeler(m)
+    out, norm, even = [], mpf(m[0]), mpf(1)
+    p_prev, p = mpf(0), mpf(1)
+    for k in range(len(m)):
+        i = k // 2
+        if k % 2 == 0:
+            if i:
+                norm *= beta[i - 1]
+            even *= norm
+            out.append(even)
+        else:
+            p, p_prev = -alpha[i] * p - (beta[i - 1] * p_prev if i else 0), p
+            out.append((-1) ** (i + 1) * p * even)
+    return out
+
+
+def write_hankel(case, m):
+    """The Hankel-Hadamard determinants H_0 .. H_{len(m)-1} of a moment set, exactly (det at 60
+    digits of the exact moments): quantity 'hankel', n_nodes 0."""
+    for k in range(len(m)):
+        row(case, 0, 'hankel', k, hankel(m, k))
+
+
+def case_hankel_boundary():
+    """Moment sets at the boundary of moment space, where a Stieltjes coefficient is 0 and the
+    next one infinite, but every Hankel determinant is finite: the library must report them
+    without forming 0 * inf. Exact binary moments; their determinants by det() only."""
+    sets = {
+        # zero mean, variance 1e-8: zeta_1 = 0, zeta_2 = inf; H_2 = 1e-8, H_3 = -1e-16
+        'hankel_zero_mean': ['1', '0', '1e-8', '0'],
+        # N(0, 1): every odd moment 0
+        'hankel_normal01': ['1', '0', '1', '0', '3', '0', '15', '0'],
+        # m_1 m_3 = m_2^2: zeta_3 = 0, zeta_4 = inf; H_3 = 0, H_4 = 2, H_5 = -4
+        'hankel_zeta3_zero': ['1', '1', '2', '4', '10', '20'],
+        # uniform [0, 1] with m_3 := 0: zeta_3 = -8/3, a negative determinant, not a zero one
+        'hankel_uniform_m3_zero': [Fraction(1), Fraction(1, 2), Fraction(1, 3), Fraction(0), Fraction(1, 5),
+                                   Fraction(1, 6)],
+    }
+    for case, values in sets.items():
+        m = [M(v) if isinstance(v, Fraction) else mpf(v) for v in values]
+        write_moments(case, m)
+        write_hankel(case, m)
+    check(hankel([mpf(1), mpf(0), mpf('1e-8'), mpf(0)], 3) == -mpf('1e-16'), 'zero-mean H_3 = -1e-16')
+    check(hankel([mpf(v) for v in sets['hankel_zeta3_zero']], 5) == -4, 'zeta_3 = 0 set: H_5 = -4')
 
 
 def case_radau():
@@ -910,6 +968,7 @@ def main():
     case_atoms()
     case_sieve()
     case_seed003()
+    case_hankel_boundary()
     case_radau()
     case_random_jacobi()
     path = os.path.join(HERE, 'moments_reference.csv')

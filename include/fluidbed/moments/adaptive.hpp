@@ -39,10 +39,11 @@
 //     6e-6 of the solids carries no physics in a fluidized bed and is a stiff, nearly empty
 //     phase in a multi-fluid solver; set smaller thresholds (or call invert()) to keep such
 //     tails.
-//   The anchors (anchors-moments note §3–§4, §8 item 6) use fixed values: QBMMlib 1e-2/1e-4,
-//   QuadMomPy 1e-8/1e-8, Uintah 1e-5/1e-5 (close to ours in double, too small for float).
-//   Their node rule compares the smallest gap with the largest, which never fires for n = 2;
-//   x_rms is used here instead.
+//   Existing codes use fixed values of r_min/e_abs: QBMMlib (AdaptiveWheeler in QBMMlib.wl)
+//   1e-2/1e-4, QuadMomPy (its adaptive Wheeler) 1e-8/1e-8, Uintah (CQMOMInversion.h, WeightRatio
+//   and AbscissaRatio) 1e-5/1e-5 — close to ours in double, too small for float. Their node rule
+//   compares the smallest gap with the largest, which never fires for n = 2; x_rms is used here
+//   instead.
 //
 // Gauss–Radau (optional). With 2n + 1 realizable moments — an odd input set, or a first failing
 // ζ of odd index — the Gauss rule must drop the last moment, while the (n + 1)-point
@@ -51,9 +52,10 @@
 //   α_n' = a + δ_n,  (J_n − a I) δ = β_n e_n,
 // whose last component, by elimination of the tridiagonal system, is δ_n = −β_n/ρ_n with
 // ρ_1 = a − α_0, ρ_{k+1} = (a − α_k) − β_k/ρ_k (ρ_k = p_k(a)/p_{k−1}(a); OpenQBMM's
-// α_n' = a − β_n p_{n−1}(a)/p_n(a), anchors note §1.2). It helps where the distribution really
-// reaches a: a = 0 for sizes that grow from nucleation, or a = the lower sieve aperture for a
-// sieved powder. Elsewhere it invents a class at a: for the 45–150 µm powder of note §7.5(b),
+// α_n' = a − β_n p_{n−1}(a)/p_n(a), in its univariateMomentSet). It helps where the distribution
+// really reaches a: a = 0 for sizes that grow from nucleation, or a = the lower sieve aperture
+// for a sieved powder. Elsewhere it invents a class at a: for a 45–150 µm sieve cut (apertures
+// 45, 53, 63, 75, 90, 106, 125, 150 µm, mass fractions 0.05, 0.10, 0.20, 0.30, 0.20, 0.10, 0.05),
 // 7 moments and a = 0 give a node at 0 holding 5.4e-4 of the solids (the weight at a decays
 // only geometrically with n as a moves away from the support, and stays above r_min there);
 // hence it is off by default. With 2n + 1 moments realizable on [0, ∞) (ζ_1 … ζ_{2n} > 0) and
@@ -172,10 +174,10 @@ FLUIDBED_HOST_DEVICE bool gauss_radau_rule(const ScaledAnalysis<T, N>& analysis,
   using std::abs;
   using std::isfinite;
   using std::ldexp;
-  FLUIDBED_EXPECTS(k >= 1 && k + 1 <= N);
+  FLUIDBED_EXPECTS(k >= 1 && k + 1 <= N);  // the callers' counts
   q.size = 0;
   Recurrence<T, N> r = analysis.recurrence;
-  const T fixed = ldexp(a, -analysis.scaling.length_exponent);
+  const T fixed = ldexp(a, -analysis.moments.scaling.length_exponent);
   T ratio = fixed - r.alpha[0];  // ρ_1
   for (int j = 1; j < k; ++j) ratio = (fixed - r.alpha[j]) - r.beta[j] / ratio;
   r.alpha[k] = fixed - r.beta[k] / ratio;
@@ -190,7 +192,7 @@ FLUIDBED_HOST_DEVICE bool gauss_radau_rule(const ScaledAnalysis<T, N>& analysis,
   for (int i = 1; i < q.size; ++i)
     if (abs(q.nodes[i] - fixed) < abs(q.nodes[nearest] - fixed)) nearest = i;
   q.nodes[nearest] = fixed;
-  unscale(q, analysis.scaling);
+  unscale(q, analysis.moments.scaling);
   for (int i = 0; i < q.size; ++i)
     if (!(q.weights[i] > T(0)) || !isfinite(q.weights[i]) || !isfinite(q.nodes[i]) ||
         (options.support == Support::positive_half_line && q.nodes[i] < T(0))) {
@@ -203,16 +205,18 @@ FLUIDBED_HOST_DEVICE bool gauss_radau_rule(const ScaledAnalysis<T, N>& analysis,
 }  // namespace detail
 
 // The (n + 1)-point Gauss–Radau rule with the node `fixed_node` (caller's units) from the 2n + 1
-// moments m_0 … m_{2n} (odd size >= 3, n + 1 <= N); exact for polynomials of degree <= 2n. The
-// whole set must be realizable on the support; otherwise, or if the rule has a weight <= 0 (or a
-// node < 0 on [0, ∞)), status is not_realizable with no nodes (first_failing_index = 0 and
-// failing_value = 0 for the latter). Test: Radau-6 of uniform [0, 1], w(0) = 1/36 (anchors §9).
+// moments m_0 … m_{2n} (odd size, 3 <= size <= 2N − 1, so that n + 1 <= N); exact for
+// polynomials of degree <= 2n. Another count is invalid_input with no nodes. The whole set must
+// be realizable on the support; otherwise, or if the rule has a weight <= 0 (or a node < 0 on
+// [0, ∞)), status is not_realizable with no nodes (first_failing_index = 0 and failing_value = 0
+// for the latter). Tested on Radau-6 of uniform [0, 1], w(0) = 1/36 (Golub 1973's construction,
+// checked to 50 digits by tests/reference/moments_reference.py).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> gauss_radau(std::span<const T> m, const T& fixed_node,
                                                        const InversionOptions& options = {}) {
-  FLUIDBED_EXPECTS(m.size() >= 3 && m.size() % 2 == 1 && m.size() <= std::size_t(2 * N - 1));
+  InversionResult<T, N> out;  // invalid_input
+  if (!detail::count_within(m.size(), 3, 2 * N - 1, detail::Parity::odd)) return out;
   const detail::ScaledAnalysis<T, N> a = detail::analyse<T, N>(m, options.support);
-  InversionResult<T, N> out;
   out.status = a.status == InversionStatus::reduced ? InversionStatus::not_realizable : a.status;
   out.first_failing_index = a.scan.first_failing_index;
   out.failing_value = detail::failing_value(a, options.support);
@@ -229,7 +233,8 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> gauss_radau(std::span<const T> m, con
 }
 
 // Adaptive inversion of m_0 … m_{size−1}, 2 <= size <= 2N (an odd size is used by Gauss–Radau,
-// or its last moment dropped). Steps: realizability (the realizable moment count R, as in
+// or its last moment dropped, as reduced_by and moments_used say); another count is
+// invalid_input with no nodes. Steps: realizability (the realizable moment count R, as in
 // realizability()); the rule for R (Gauss–Radau with ⌊R/2⌋ + 1 nodes if R is odd and radau is
 // set, else Gauss with ⌊R/2⌋ nodes); then, while the rule has > 1 node and is degenerate, the
 // Gauss rule with one node less. Allocation-free, no exceptions; statuses as invert().
@@ -238,12 +243,12 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> gauss_radau(std::span<const T> m, con
 template <class T, int N>
 FLUIDBED_HOST_DEVICE AdaptiveInversionResult<T, N> invert_adaptive(std::span<const T> m,
                                                                    const AdaptiveOptions<T>& options = {}) {
-  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N));
   FLUIDBED_EXPECTS(options.min_weight_fraction >= T(0) && options.min_node_separation >= T(0) &&
                    options.boundary_tolerance >= T(0));
+  AdaptiveInversionResult<T, N> out;  // invalid_input
+  if (!detail::count_within(m.size(), 2, 2 * N)) return out;
   const Support support = options.inversion.support;
   const detail::ScaledAnalysis<T, N> a = detail::analyse<T, N>(m, support);
-  AdaptiveInversionResult<T, N> out;
   out.status = a.status;
   out.first_failing_index = a.scan.first_failing_index;
   out.failing_value = detail::failing_value(a, support);

@@ -21,9 +21,13 @@
 //
 // Host only: the lanes are Eigen arrays. On a GPU, call invert() per thread (the
 // structure-of-arrays layout is then the coalesced one).
+//
+// Eigen is what makes the lanes SIMD at the default flags: Eigen::Array's sqrt, min and
+// division are packet operations on every target Eigen supports, where a loop of std::sqrt is
+// not vectorized while math-errno is on, and the alternatives (intrinsics per architecture,
+// std::experimental::simd) are less portable. This header and eigen_backend.hpp are the only
+// ones that need Eigen.
 #pragma once
-
-#include <Eigen/Core>
 
 #include <array>
 #include <bit>
@@ -34,6 +38,7 @@
 #include <span>
 
 #include "../core/config.hpp"
+#include "eigen_core.hpp"
 #include "inversion.hpp"
 #include "jacobi_eigen.hpp"
 #include "realizability.hpp"
@@ -41,21 +46,23 @@
 
 namespace fluidbed::moments {
 
-// Read-only view of the moments of `cells` cells: moment k of cell c is moments[k][c].
+// Read-only view of the moments of a batch of cells: moment k of cell c is moments[k][c]. The
+// batch has moments[0].size() cells; every moments[k] must have that size.
 template <class T, int N>
 struct MomentBatch {
-  std::array<const T*, 2 * N> moments{};
-  std::size_t cells = 0;
+  std::array<std::span<const T>, 2 * N> moments{};
+  std::size_t cells() const { return moments[0].size(); }
 };
 
 // Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
 // weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
+// Every span must have as many entries as the batch has cells.
 template <class T, int N>
 struct QuadratureBatch {
-  std::array<T*, N> nodes{};
-  std::array<T*, N> weights{};
-  int* sizes = nullptr;
-  InversionStatus* status = nullptr;
+  std::array<std::span<T>, N> nodes{};
+  std::array<std::span<T>, N> weights{};
+  std::span<int> sizes;
+  std::span<InversionStatus> status;
 };
 
 namespace detail {
@@ -267,7 +274,7 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, con
   V m[2 * N];
   for (int k = 0; k < 2 * N; ++k) {
     if (count == L) {
-      m[k] = Eigen::Map<const V>(in.moments[k] + first);
+      m[k] = Eigen::Map<const V>(in.moments[k].data() + first);
     } else {
       m[k].setZero();  // padding lanes: empty cells, never stored
       for (int i = 0; i < count; ++i) m[k][i] = in.moments[k][first + i];
@@ -278,8 +285,8 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, con
   invert_lane_values<support>(m, x, w, guards);
   for (int k = 0; k < N; ++k) {
     if (count == L) {
-      Eigen::Map<V>(out.nodes[k] + first) = x[k];
-      Eigen::Map<V>(out.weights[k] + first) = w[k];
+      Eigen::Map<V>(out.nodes[k].data() + first) = x[k];
+      Eigen::Map<V>(out.weights[k].data() + first) = w[k];
     } else {
       for (int i = 0; i < count; ++i) {
         out.nodes[k][first + i] = x[k][i];
@@ -309,8 +316,19 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, con
 template <Support support, class T, int N>
 void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
   constexpr std::size_t L = std::size_t(batch_lanes<T>);
-  for (std::size_t first = 0; first < in.cells; first += L)
-    invert_lanes<support>(in, first, int(in.cells - first < L ? in.cells - first : L), out);
+  const std::size_t cells = in.cells();
+  for (std::size_t first = 0; first < cells; first += L)
+    invert_lanes<support>(in, first, int(cells - first < L ? cells - first : L), out);
+}
+
+// Whether every span of a batch has as many entries as it has cells.
+template <class T, int N>
+bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
+  const std::size_t cells = in.cells();
+  bool same = out.sizes.size() == cells && out.status.size() == cells;
+  for (const std::span<const T>& moment : in.moments) same = same && moment.size() == cells;
+  for (int i = 0; i < N; ++i) same = same && out.nodes[i].size() == cells && out.weights[i].size() == cells;
+  return same;
 }
 
 }  // namespace detail
@@ -319,16 +337,18 @@ void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& ou
 // results, statuses and reduced rules of invert<T, N>(moments of the cell, {.support}) — to
 // rounding for N = 3 (a different eigen-solver), bit for bit otherwise (at flags without
 // floating-point contraction). Allocation-free and thread-safe; distinct threads may invert
-// disjoint cell ranges of the same arrays. Preconditions: every pointer of `in` and `out`
-// addresses `in.cells` elements.
+// disjoint cell ranges of the same arrays. Returns false, reading and writing nothing, unless
+// every span of `in` and `out` has in.cells() entries (an empty batch: true).
 template <class T, int N>
-void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
-                    Support support = Support::positive_half_line) {
-  static_assert(N >= 1);
+[[nodiscard]] bool invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
+                                  Support support = Support::positive_half_line) {
+  static_assert(N >= 1, "fluidbed::moments::invert_batched: N >= 1 nodes per cell");
+  if (!detail::same_cell_counts(in, out)) return false;
   if (support == Support::positive_half_line)
     detail::invert_batched<Support::positive_half_line>(in, out);
   else
     detail::invert_batched<Support::real_line>(in, out);
+  return true;
 }
 
 }  // namespace fluidbed::moments

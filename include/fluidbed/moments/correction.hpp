@@ -1,5 +1,5 @@
-// fluidbed — correction of corrupted moment sets (seed 003, "The numerical corruption of
-// higher-order advected moments"; note seed000-003 §3.2–3.3 and §8 item 22).
+// fluidbed — correction of corrupted moment sets (seed 003, section "The numerical corruption of
+// higher-order advected moments").
 //
 // Finite-volume advection of each moment as an independent scalar does not preserve the
 // relations among them (Wright (2007), "Numerical advection of moments of the particle size
@@ -9,7 +9,9 @@
 //   1. McGraw's correction — McGraw, R. (2006), "Correcting moment sequences for errors
 //      associated with advective transport", Brookhaven National Laboratory report,
 //      http://www.ecd.bnl.gov/pubs/momentcorrection_mcgraw2006.pdf (seed 003 ref. 59; the
-//      report itself could not be retrieved, the algorithm follows note §3.3): with
+//      report itself could not be retrieved: what follows is the seed's description — change
+//      the one moment that most reduces the third differences of ln M_k, i.e. moves the set
+//      toward the nearest log-normal — made explicit as a least-squares projection): with
 //      ℓ_k = ln m_k and the third differences d_j = ℓ_{j+3} − 3ℓ_{j+2} + 3ℓ_{j+1} − ℓ_j
 //      (j = 0 … L − 4; d = 0 for a log-normal, whose ℓ_k is a parabola), multiplying one
 //      moment m_k by c changes d by (ln c) b^(k), b^(k)_j = ∂d_j/∂ℓ_k ∈ {−1, 3, −3, 1}. The
@@ -19,19 +21,22 @@
 //      stop as soon as ln m_k is convex (every Δ²_k = ℓ_k − 2ℓ_{k+1} + ℓ_{k+2} >= 0, McGraw's
 //      criterion) or after max_iterations;
 //   2. the full realizability test (realizability.hpp: every ζ_j > 0 — seed 003 checks the
-//      Hankel determinants of order >= 4, which the ζ signs decide, note §2.2);
+//      Hankel determinants of order >= 4, which the ζ signs decide, since
+//      ζ_k = H_k H_{k−3}/(H_{k−1} H_{k−2}): every ζ_k > 0 iff every H_k > 0);
 //   3. if it fails, the log-normal sharing M_0, M_1, M_2 (M_k = M_0 r^k q^{k(k−1)/2},
 //      r = M_1/M_0, q = M_0 M_2/M_1²) with the set as McGraw left it. Seed 003 says "with the
 //      original set"; the two agree unless McGraw changed M_1 or M_2, i.e. found one of them to
-//      be the corrupted moment, and then its value is the better one: note §7.6's M_1 × 1.3 is
-//      brought back from 145.4 to 115.0 (exact 111.88), and the corrupted 145.4 would give
-//      M_0 M_2 < M_1², no log-normal at all. protected_moments = 3 gives the literal reading.
+//      be the corrupted moment, and then its value is the better one: in the 4-class mixture of
+//      seed 000 Table 6.4 (75, 103, 240, 355 µm; volume fractions 0.131, 0.169, 0.190, 0.110)
+//      with M_1 × 1.3, M_1 is brought back from 145.4 to 115.0 (exact 111.88), and the corrupted
+//      145.4 would give M_0 M_2 < M_1², no log-normal at all. protected_moments = 3 gives the
+//      literal reading.
 //
-// Decisions (note §8 item 22):
+// Decisions (the seed leaves them open):
 //   * Candidate set k = protected_moments … L − 1, default protected_moments = 1: M_0 (the
 //     solids volume fraction) is never changed, as in the published implementations. M_1 and M_2
-//     stay candidates: when the corrupted moment is M_1 McGraw picks it (note §7.6: M_1 × 1.3 →
-//     k* = 1, 115.0 against the exact 111.88), and forbidding it would move the error into the
+//     stay candidates: when the corrupted moment is M_1 McGraw picks it (the mixture above with
+//     M_1 × 1.3: k* = 1, 115.0 against the exact 111.88), and forbidding it would move the error into the
 //     higher moments. Set protected_moments = 3 to keep d43 and the variance. The fallback
 //     changes nothing below M_3 (below M_2 in the monodisperse case) beyond what McGraw did.
 //   * Exact ties of cos²θ go to the higher index (corruption "usually affects higher-order
@@ -40,10 +45,11 @@
 //     moments"; with L = 4 there is one third difference and every candidate cancels it), and
 //     only if every moment is > 0 (logarithms); otherwise the fallback acts directly.
 //   * Stopping: convexity, then the full test. Iterating until the full test passes instead
-//     drifts M_1, M_2 (35–46 iterations and M_1 moved by ~6% on note §7.6; no convergence in
-//     100 iterations on seed 003 powder A): the fallback is cheaper and keeps M_0 … M_2.
-//   * max_iterations = 20 (published codes use 20–100, note §3.3; each iteration only lowers
-//     |d|, the convexity stop takes 1 iteration on every case of note §7.6).
+//     drifts M_1, M_2 (35–46 iterations and M_1 moved by ~6% on the mixture above with one of
+//     M_1 … M_7 corrupted; no convergence in 100 iterations on seed 003 Table 1 powder A): the
+//     fallback is cheaper and keeps M_0 … M_2.
+//   * max_iterations = 20 (published codes use 20–100; each iteration only lowers |d|, and the
+//     convexity stop takes 1 iteration on every corrupted mixture of tests/test_moment_correction.cpp).
 //   * A set on the boundary of moment space within round-off — some ζ_j, j >= 2, up to the first
 //     failing one, with |ζ_j| <= degenerate_tolerance ζ_1 — is a valid degenerate set (fewer
 //     atoms than nodes; adaptive.hpp inverts it) and is left unchanged; correcting it would
@@ -89,7 +95,8 @@ enum class CorrectionStatus {
   monodisperse,  // M_0 M_2 < M_1²: replaced by M_0 r^k (M_0, M_1 kept)
   zero_mass,     // every moment 0 (an empty cell): nothing to correct
   failed,        // NaN/±∞, m_0 <= 0 or m_1 <= 0, or no correction with finite positive moments
-                 // (beyond the range of T): not correctable, moments returned as given
+                 // (beyond the range of T): not correctable, moments returned as given; or a
+                 // count outside 1 … 2N: nothing read, size 0
 };
 
 template <class T>
@@ -167,9 +174,14 @@ FLUIDBED_HOST_DEVICE bool on_boundary(const RealizabilityReport<T, N>& report, c
 }
 
 // Starts a result: copies m, ratio 1, checks the input. Returns false (status set) when the
-// set cannot be corrected at all or is empty.
+// set cannot be corrected at all or is empty; a count outside 1 … 2N is not copied (size 0).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE bool start_correction(std::span<const T> m, CorrectionResult<T, N>& out) {
+  if (!count_within(m.size(), 1, 2 * N)) {
+    out.size = 0;
+    out.status = CorrectionStatus::failed;
+    return false;
+  }
   out.size = int(m.size());
   for (int k = 0; k < out.size; ++k) {
     out.moments[k] = m[k];
@@ -208,11 +220,9 @@ FLUIDBED_HOST_DEVICE bool run_mcgraw(CorrectionResult<T, N>& out, int protected_
   using std::isfinite;
   using std::log;
   const int L = out.size;
-  const std::span<const T> view(out.moments.data(), std::size_t(L));
-  const MomentScaling s = scaling_of(view);
+  const ScaledMoments<T, N> scaled = scaled_moments<T, N>(std::span<const T>(out.moments.data(), std::size_t(L)));
   T l[2 * N]{};
-  scale_moments(view, s, std::span<T>(l, std::size_t(L)));
-  for (int k = 0; k < L; ++k) l[k] = log(l[k]);
+  for (int k = 0; k < L; ++k) l[k] = log(scaled.values[std::size_t(k)]);
   const int first = protected_moments < 1 ? 1 : protected_moments;
   while (out.iterations < max_iterations && !log_convex(l, L)) {
     T ln_c(0);
@@ -234,10 +244,9 @@ FLUIDBED_HOST_DEVICE bool run_mcgraw(CorrectionResult<T, N>& out, int protected_
 // McGraw's iterations alone (step 1 above), until ln m_k is convex or max_iterations: status
 // mcgraw if it changed something, unchanged if the set was convex (or L < 6, or a moment <= 0),
 // zero_mass or failed for such inputs, failed (moments as given) if a step leaves the range of
-// T. Realizability is reported, not enforced.
+// T. Realizability is reported, not enforced. A count outside 1 … 2N: failed, size 0.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE CorrectionResult<T, N> mcgraw_correct(std::span<const T> m, const CorrectionOptions<T>& options = {}) {
-  FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
   CorrectionResult<T, N> out;
   if (!detail::start_correction(m, out)) return out;
   bool positive = true;
@@ -253,14 +262,13 @@ FLUIDBED_HOST_DEVICE CorrectionResult<T, N> mcgraw_correct(std::span<const T> m,
 
 // The full correction of seed 003 (steps 1–3 above, with the decisions listed there; a McGraw
 // step beyond the range of T hands the set as given to the fallback, a fallback beyond it gives
-// status failed with the moments as given).
+// status failed with the moments as given). A count outside 1 … 2N: failed, size 0.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE CorrectionResult<T, N> correct_moments(std::span<const T> m,
                                                             const CorrectionOptions<T>& options = {}) {
   using std::exp;
   using std::isfinite;
   using std::log;
-  FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
   CorrectionResult<T, N> out;
   if (!detail::start_correction(m, out)) return out;
   const RealizabilityReport<T, N> given = realizability<T, N>(m);

@@ -21,6 +21,8 @@
 // matrices have a fixed maximum size (N×N) and the runtime size n.
 #pragma once
 
+#include "eigen_core.hpp"  // first: Eigen's Core without its own warnings
+
 #include <Eigen/Eigenvalues>
 
 #include <array>
@@ -36,7 +38,8 @@
 namespace fluidbed::moments {
 
 // Nodes (ascending) and weights of the r.size-point Gauss rule of r, by Eigen's tridiagonal
-// solver. Returns false (q.size = 0) if Eigen reports no convergence (30 n iterations).
+// solver. Returns false (q.size = 0) if Eigen reports no convergence (30 n iterations), or for
+// a size not within 0 … N.
 template <class T, int N>
 bool gauss_eigen_tridiagonal(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
   using std::sqrt;
@@ -46,8 +49,8 @@ bool gauss_eigen_tridiagonal(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
   using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, capacity, capacity>;
   using Solver = Eigen::SelfAdjointEigenSolver<Matrix>;
   const int n = r.size;
-  FLUIDBED_EXPECTS(n >= 0 && n <= N);
   q.size = 0;
+  if (!detail::size_in_storage(r)) return false;
   if (n == 0) return true;
   typename Solver::RealVectorType diagonal(n);
   typename Solver::SubDiagonalType subdiagonal(n - 1);
@@ -67,7 +70,7 @@ bool gauss_eigen_tridiagonal(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
 
 
 // invert() (inversion.hpp) with the nodes and weights from gauss_eigen_tridiagonal() for every
-// node count: the same statuses and diagnostics; options.solver is not used.
+// node count: the same counts, statuses and diagnostics; options.solver is not used.
 template <class T, int N>
 InversionResult<T, N> invert_eigen(std::span<const T> m, const InversionOptions& options = {}) {
   return detail::invert_with<T, N>(m, options, [](const Recurrence<T, N>& r, Quadrature<T, N>& q) {

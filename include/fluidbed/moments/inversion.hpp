@@ -12,9 +12,10 @@
 //   6. unscale nodes and weights exactly.
 // Never NaN without a status, never an exception or abort: problems are returned as data.
 //
-// Node counts. invert<T, N>(span) takes any even number 2n <= 2N of moments: N is the
-// compile-time capacity (the storage), n the runtime node count. invert<N>(std::array) is
-// the fixed-n = N form. In double precision more than ~10–12 nodes are meaningless for
+// Node counts. invert<T, N>(span) takes any even number 2n of moments, 2 <= 2n <= 2N: N is the
+// compile-time capacity (the storage), n the runtime node count. Any other count (empty, odd,
+// above 2N) is invalid_input with no node, at every optimisation level: never a moment dropped,
+// never an access beyond the storage. invert<N>(std::array) is the fixed-n = N form. In double precision more than ~10–12 nodes are meaningless for
 // size distributions (the map from moments to nodes loses about a decade per node; see
 // tests/reference/moments_reference.py's conditioning), so a capacity of 10–16 serves every
 // runtime use.
@@ -67,29 +68,28 @@ namespace detail {
 
 // The pipeline with the eigen step as a parameter: solve(recurrence, quadrature) fills the
 // quadrature of a scaled recurrence and returns false on failure (eigen_backend.hpp passes
-// Eigen's solver). Preconditions as invert().
+// Eigen's solver). Counts and statuses as invert().
 template <class T, int N, class Solve>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, const InversionOptions& options,
                                                         Solve&& solve) {
-  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
-  InversionResult<T, N> out;
+  InversionResult<T, N> out;  // invalid_input
+  if (!count_within(m.size(), 2, 2 * N, Parity::even)) return out;
   const int requested = int(m.size() / 2);
   out.status = input_status(m);
   if (out.status != InversionStatus::ok) {
     if (out.status == InversionStatus::not_realizable) out.failing_value = m[0];
     return out;
   }
-  const MomentScaling s = scaling_of(m);
-  T scaled[2 * N];
-  scale_moments(m, s, std::span<T>(scaled, m.size()));
-  if (!scaled_moments_in_range(m, std::span<const T>(scaled, m.size()))) {
+  const ScaledMoments<T, N> scaled = scaled_moments<T, N>(m);
+  if (!scaled_moments_in_range(m, scaled.view())) {
     out.status = InversionStatus::invalid_input;
     return out;
   }
   out.status = InversionStatus::not_realizable;
-  const std::span<const T> view(scaled, m.size());
-  Recurrence<T, N> r = options.algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
-                                                                         : product_difference_unscaled<T, N>(view);
+  Recurrence<T, N> r = options.algorithm == RecurrenceAlgorithm::wheeler
+                           ? wheeler_unscaled<T, N>(scaled.view())
+                           : product_difference_unscaled<T, N>(scaled.view());
+  const MomentScaling s = scaled.scaling;
   assess(r, requested, options.support, s, out);
   out.realizable_nodes = r.size;
   if (r.size == 0) return out;  // not_realizable (e.g. a negative mean on [0, ∞))
@@ -114,7 +114,8 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
 }  // namespace detail
 
 // The Gauss quadrature of the first n nodes, n = m.size()/2 <= N (2n moments m_0 … m_{2n−1}).
-// Preconditions: m.size() even, 2 <= m.size() <= 2N. Everything else is a status.
+// No preconditions: a count other than 2, 4, … 2N is invalid_input (see above), and so is
+// everything else the data can be a status.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const InversionOptions& options = {}) {
   return detail::invert_with<T, N>(m, options, [&options](const Recurrence<T, N>& r, Quadrature<T, N>& q) {

@@ -48,14 +48,15 @@ FLUIDBED_HOST_DEVICE void sort_nodes(Quadrature<T, N>& q) {
 // c ∓ √(h² + β_1), c = (α_0 + α_1)/2, cancels for the node near α_0 when the other is far: off
 // by ε|x_far|, 2.8e-10 at 0.1 beside −5.9e6, found by fuzz/.) The weights in the Christoffel
 // form w_i = m_0 β_1/(β_1 + y_i²), on those y, have no cancellation either (the textbook
-// (m_0 x_2 − m_1)/(x_2 − x_1) loses the small weight of a skewed pair).
+// (m_0 x_2 − m_1)/(x_2 − x_1) loses the small weight of a skewed pair). An empty rule (size 0)
+// for a recurrence of another size (> 2, or beyond N).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& r) {
   using std::hypot;
   using std::isfinite;
   using std::sqrt;
-  FLUIDBED_EXPECTS(r.size >= 0 && r.size <= 2);
   Quadrature<T, N> q;
+  if (r.size > 2 || !detail::size_in_storage(r)) return q;
   q.size = r.size;
   if (r.size == 1) {
     q.nodes[0] = r.alpha[0];
@@ -82,13 +83,16 @@ FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& 
 // false if some eigenvalue needed more than 30 iterations (never observed; the quadrature
 // is then left with size 0). Expects the recurrence in units where its entries are O(1) or
 // at least far from overflow (inversion.hpp passes the scaled one): sqrt(f² + g²) is used
-// for the rotations instead of hypot.
+// for the rotations instead of hypot. Returns false (q.size = 0) for a size not within 0 … N.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE bool gauss_golub_welsch(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
   using std::abs;
   using std::sqrt;
   const int n = r.size;
-  FLUIDBED_EXPECTS(n >= 0 && n <= N);
+  if (!detail::size_in_storage(r)) {
+    q.size = 0;
+    return false;
+  }
   T d[N]{};
   T e[N]{};
   T z[N]{};
@@ -294,7 +298,7 @@ namespace detail {
 template <class T, int N>
 FLUIDBED_HOST_DEVICE bool gauss_three_nodes_within_limit(const Recurrence<T, N>& r, Quadrature<T, N>& q) {
   static_assert(N >= 3);
-  FLUIDBED_EXPECTS(r.size == 3);
+  FLUIDBED_EXPECTS(r.size == 3);  // the callers' branch
   const T alpha[3] = {r.alpha[0], r.alpha[1], r.alpha[2]};
   const T beta[3] = {r.beta[0], r.beta[1], r.beta[2]};
   T x[3], w[3];
@@ -310,11 +314,14 @@ FLUIDBED_HOST_DEVICE bool gauss_three_nodes_within_limit(const Recurrence<T, N>&
 }  // namespace detail
 
 // The same for one cell: a recurrence with r.size == 3 (β_1, β_2 > 0), whatever the spread.
-// invert() uses it only within detail::three_node_spread_limit, the QL beyond.
+// invert() uses it only within detail::three_node_spread_limit, the QL beyond. An empty rule
+// (size 0) for a recurrence of another size; a capacity N < 3, which holds no three-node rule,
+// is refused at compile time.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_three_nodes(const Recurrence<T, N>& r) {
+  static_assert(N >= 3, "fluidbed::moments::gauss_three_nodes: a three-node rule needs a Recurrence<T, N> with N >= 3");
   Quadrature<T, N> q;
-  detail::gauss_three_nodes_within_limit(r, q);
+  if (r.size == 3) detail::gauss_three_nodes_within_limit(r, q);
   return q;
 }
 

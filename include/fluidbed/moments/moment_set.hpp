@@ -1,7 +1,7 @@
 // fluidbed — moment sets: the moments of a quadrature, of a sieve analysis and of a log-normal
 // distribution; mean diameters; VDF ↔ NDF moments.
 //
-// Conventions (seed 000 §5.2, §5.7; seed 003 eqs. 0.5–0.7, 0.11; note seed000-003 §1):
+// Conventions (seed 000 §5.2, §5.7; seed 003 eqs. 0.5–0.7, 0.11):
 //   M_k = ∫ f_v(ξ) ξ^k dξ, the raw moments of the VOLUME density function f_v over the particle
 //   DIAMETER ξ, dimensional (m^k) and unnormalised; the tracked set is k = 0 … 2ν − 1.
 //   f_v = f_n π ξ³/6 (spheres), so M_k = (π/6) μ_{k+3} with μ_j = ∫ f_n ξ^j dξ the NDF moments.
@@ -10,13 +10,22 @@
 //   f_v ≈ Σ φ_i δ(ξ − ξ_i), so M_k = Σ φ_i ξ_i^k for every k, negative orders included.
 // Mean diameters: d_pq = (μ_p/μ_q)^{1/(p−q)} = (M_{p−3}/M_{q−3})^{1/(p−q)}; d43 = M_1/M_0
 // (De Brouckère), d32 = M_0/M_{−1} (Sauter), d10 = M_{−2}/M_{−3} (number mean).
+//
+// Counts. A function that fills a caller's span returns false, with every entry of that span
+// NaN, when the spans it is given do not match (nodes and weights of different lengths, an
+// output longer than its input); a function returning one value returns NaN for too few
+// moments, a sieve analysis whose edges are not one more than its fractions (or without a bin),
+// or a quadrature whose size is not within 0 … N. Nothing is read beyond a span, at any
+// optimisation level; sieve_moment_checked throws instead, naming the counts.
 #pragma once
 
 #include <array>
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <sstream>
+#include <string>
 
 #include "../core/config.hpp"
 #include "../core/errors.hpp"
@@ -41,11 +50,15 @@ FLUIDBED_HOST_DEVICE T integer_power(const T& x, int k) {
 // ---------------------------------------------------------------------------------------------
 // Moments of a quadrature (a sum of atoms)
 
-// m_k = Σ_i w_i x_i^k for k = 0 … out.size() − 1. Preconditions: nodes.size() == weights.size().
+// m_k = Σ_i w_i x_i^k for k = 0 … out.size() − 1. Returns false (every out[k] NaN) unless
+// nodes.size() == weights.size().
 template <class T>
-FLUIDBED_HOST_DEVICE void moments_from_quadrature(std::span<const T> nodes, std::span<const T> weights,
+FLUIDBED_HOST_DEVICE bool moments_from_quadrature(std::span<const T> nodes, std::span<const T> weights,
                                                   std::span<T> out) {
-  FLUIDBED_EXPECTS(nodes.size() == weights.size());
+  if (nodes.size() != weights.size()) {
+    detail::fill_with_nan(out);
+    return false;
+  }
   for (T& m : out) m = T(0);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     T term = weights[i];
@@ -54,17 +67,25 @@ FLUIDBED_HOST_DEVICE void moments_from_quadrature(std::span<const T> nodes, std:
       term *= nodes[i];
     }
   }
+  return true;
 }
 
+// The same for the q.size nodes of a quadrature (false, out NaN, for a size not within 0 … N).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE void moments_from_quadrature(const Quadrature<T, N>& q, std::span<T> out) {
-  moments_from_quadrature<T>(std::span<const T>(q.nodes.data(), std::size_t(q.size)),
-                             std::span<const T>(q.weights.data(), std::size_t(q.size)), out);
+FLUIDBED_HOST_DEVICE bool moments_from_quadrature(const Quadrature<T, N>& q, std::span<T> out) {
+  if (!detail::size_in_storage(q)) {
+    detail::fill_with_nan(out);
+    return false;
+  }
+  return moments_from_quadrature<T>(std::span<const T>(q.nodes.data(), std::size_t(q.size)),
+                                    std::span<const T>(q.weights.data(), std::size_t(q.size)), out);
 }
 
-// One moment of any integer order k of a quadrature: Σ_i w_i x_i^k (k < 0 needs nodes ≠ 0).
+// One moment of any integer order k of a quadrature: Σ_i w_i x_i^k (k < 0 needs nodes ≠ 0); NaN
+// for a size not within 0 … N.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T quadrature_moment(const Quadrature<T, N>& q, int k) {
+  if (!detail::size_in_storage(q)) return std::numeric_limits<T>::quiet_NaN();
   T sum(0);
   for (int i = 0; i < q.size; ++i) sum += q.weights[i] * detail::integer_power(q.nodes[i], k);
   return sum;
@@ -116,9 +137,17 @@ FLUIDBED_HOST_DEVICE T bin_power_mean(const T& a, const T& b, int p) {
   return sum / T(q);
 }
 
-// Σ_i f_i ⟨ξ^{k+s}⟩_i, s = 0 (volume basis) or 3 (number basis): the unnormalised M_k.
+// Whether the edges of a sieve analysis are one more than its fractions, with at least one bin.
+template <class T>
+FLUIDBED_HOST_DEVICE bool bins_match(const SieveAnalysis<T>& psd) {
+  return !psd.fractions.empty() && psd.edges.size() == psd.fractions.size() + 1;
+}
+
+// Σ_i f_i ⟨ξ^{k+s}⟩_i, s = 0 (volume basis) or 3 (number basis): the unnormalised M_k (NaN
+// unless bins_match).
 template <class T>
 FLUIDBED_HOST_DEVICE T sieve_sum(const SieveAnalysis<T>& psd, int k) {
+  if (!bins_match(psd)) return std::numeric_limits<T>::quiet_NaN();
   const int shift = psd.basis == SizeBasis::number ? 3 : 0;
   T sum(0);
   for (std::size_t i = 0; i < psd.fractions.size(); ++i)
@@ -132,27 +161,29 @@ FLUIDBED_HOST_DEVICE T sieve_sum(const SieveAnalysis<T>& psd, int k) {
 // eq. E.7 (= eq. 6.3 = seed 003 eq. 0.17), the VDF taken uniform within each bin,
 //   M_k = (1 − ε) Σ_i ω_i (ξ_i^{k+1} − ξ_{i−1}^{k+1}) / ((k + 1)(ξ_i − ξ_{i−1})) / Σ_i ω_i,
 // with the exact logarithmic limit (1 − ε) Σ ω_i ln(ξ_i/ξ_{i−1})/(ξ_i − ξ_{i−1}) at k = −1,
-// where E.7 divides by zero (note §8 item 18). Units: those of the edges, to the power k.
+// where E.7 divides by zero. Units: those of the edges, to the power k.
 //
 // Number-based input (basis = number) is converted consistently by taking the NDF, not the
 // VDF, uniform within each bin (the number analogue of E.7): f_v = (π/6) ξ³ f_n gives
 //   M_k = (1 − ε) Σ_i ν_i ⟨ξ^{k+3}⟩_i / Σ_i ν_i ⟨ξ³⟩_i,   ⟨ξ^p⟩_i = bin mean of ξ^p,
 // i.e. bin volume fractions ω_i = ν_i⟨ξ³⟩_i/Σ_j ν_j⟨ξ³⟩_j with a VDF ∝ ξ³ inside each bin. Feeding
 // those ω_i to E.7 instead would differ at second order in the bin width.
-// Preconditions (checked by sieve_moment_checked): edges.size() == fractions.size() + 1 >= 2,
-// edges strictly increasing and >= 0, fractions >= 0 with a positive sum, 0 < ε <= 1,
-// edges[0] > 0 if k < 0 (else the result is +∞), and M_k within the range of T (edges whose
-// powers overflow give ±∞ or NaN: sieve_moment_checked rejects them; below the range, 0).
+// NaN unless edges.size() == fractions.size() + 1 >= 2 (see Counts above). Preconditions
+// (checked by sieve_moment_checked): edges strictly increasing and >= 0, fractions >= 0 with a
+// positive sum, 0 < ε <= 1, edges[0] > 0 if k < 0 (else the result is +∞), and M_k within the
+// range of T (edges whose powers overflow give ±∞ or NaN: sieve_moment_checked rejects them;
+// below the range, 0).
 template <class T>
 FLUIDBED_HOST_DEVICE T sieve_moment(const SieveAnalysis<T>& psd, const T& voidage, int k) {
-  FLUIDBED_EXPECTS(psd.edges.size() == psd.fractions.size() + 1 && !psd.fractions.empty());
   return (T(1) - voidage) * detail::sieve_sum(psd, k) / detail::sieve_sum(psd, 0);
 }
 
-// M_0 … M_{out.size()−1} of a sieve analysis (same preconditions as sieve_moment).
+// M_0 … M_{out.size()−1} of a sieve analysis (as sieve_moment). Returns false, every entry NaN,
+// unless edges.size() == fractions.size() + 1 >= 2.
 template <class T>
-FLUIDBED_HOST_DEVICE void sieve_moments(const SieveAnalysis<T>& psd, const T& voidage, std::span<T> out) {
+FLUIDBED_HOST_DEVICE bool sieve_moments(const SieveAnalysis<T>& psd, const T& voidage, std::span<T> out) {
   for (std::size_t k = 0; k < out.size(); ++k) out[k] = sieve_moment(psd, voidage, int(k));
+  return detail::bins_match(psd);
 }
 
 // sieve_moment with its preconditions validated: throws std::domain_error naming the
@@ -163,9 +194,11 @@ FLUIDBED_HOST_DEVICE void sieve_moments(const SieveAnalysis<T>& psd, const T& vo
 template <class T>
 T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   constexpr const char* function = "moments::sieve_moment";
-  if (psd.fractions.empty() || psd.edges.size() != psd.fractions.size() + 1)
+  if (psd.fractions.empty())
+    fluidbed::detail::throw_domain_error(function, "fractions.size()", psd.fractions.size(), "must be >= 1 (a bin)");
+  if (!detail::bins_match(psd))
     fluidbed::detail::throw_domain_error(function, "edges.size()", psd.edges.size(),
-                                         "must be fractions.size() + 1 with at least one bin");
+                                         "must be fractions.size() + 1 = " + std::to_string(psd.fractions.size() + 1));
   require_non_negative(function, "edges[0]", psd.edges[0]);
   if (k < 0) require_positive(function, "edges[0] (negative order k)", psd.edges[0]);
   for (std::size_t i = 1; i < psd.edges.size(); ++i)
@@ -193,9 +226,12 @@ T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
 // Geldart's estimate of the Sauter diameter from sieve data, seed 000 eq. 6.1:
 // d_sv = (Σ_i ω_i/d̄_i)^{−1} with the arithmetic bin means d̄_i = (ξ_{i−1} + ξ_i)/2 and the mass
 // fractions ω_i (normalised; number data converted to volume fractions as in sieve_moment). It
-// is not M_0/M_{−1} of the piecewise-uniform VDF: the two differ by 0.25% on note §7.5(b).
+// is not M_0/M_{−1} of the piecewise-uniform VDF: the two differ by 0.25% on a 45–150 µm sieve
+// cut (apertures 45, 53, 63, 75, 90, 106, 125, 150 µm, mass fractions 0.05, 0.10, 0.20, 0.30,
+// 0.20, 0.10, 0.05: 79.683 against 79.484 µm). NaN unless edges.size() == fractions.size() + 1 >= 2.
 template <class T>
 FLUIDBED_HOST_DEVICE T geldart_sauter_diameter(const SieveAnalysis<T>& psd) {
+  if (!detail::bins_match(psd)) return std::numeric_limits<T>::quiet_NaN();
   const int shift = psd.basis == SizeBasis::number ? 3 : 0;
   T volume(0), surface(0);
   for (std::size_t i = 0; i < psd.fractions.size(); ++i) {
@@ -219,20 +255,23 @@ FLUIDBED_HOST_DEVICE T mean_diameter(int p, int q, VdfMoment&& vdf_moment) {
   return p - q == 1 ? ratio : T(pow(ratio, T(1) / T(p - q)));
 }
 
-// d43 = M_1/M_0, the volume-mean (De Brouckère) diameter (seed 003 text after eq. 0.12).
+// d43 = M_1/M_0, the volume-mean (De Brouckère) diameter (seed 003 text after eq. 0.12); NaN for
+// fewer than 2 moments.
 template <class T>
 FLUIDBED_HOST_DEVICE T d43(std::span<const T> m) {
-  return m[1] / m[0];
+  return m.size() >= 2 ? m[1] / m[0] : std::numeric_limits<T>::quiet_NaN();
 }
 
-// d32 = Σφ_i / Σ(φ_i/ξ_i), the Sauter diameter of a quadrature (note §7.3: 88.56 and 272.3 µm
-// for the seed-003 powders A and B).
+// d32 = Σφ_i / Σ(φ_i/ξ_i), the Sauter diameter of a quadrature (88.56 and 272.3 µm for the
+// published 2-node quadratures of powders A and B, seed 000 Table 6.2, whose reported d_sv are
+// 88 and 273 µm).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T d32(const Quadrature<T, N>& q) {
   return mean_diameter<T>(3, 2, [&](int k) { return quadrature_moment(q, k); });
 }
 
-// d32 = M_0/M_{−1} of a sieve analysis (exact logarithmic M_{−1}; note §7.5: 79.48364158 µm).
+// d32 = M_0/M_{−1} of a sieve analysis (exact logarithmic M_{−1}; 79.48364158 µm for the sieve
+// cut of geldart_sauter_diameter).
 template <class T>
 FLUIDBED_HOST_DEVICE T d32(const SieveAnalysis<T>& psd) {
   return mean_diameter<T>(3, 2, [&](int k) { return detail::sieve_sum(psd, k); });
@@ -251,17 +290,19 @@ FLUIDBED_HOST_DEVICE T d10(const SieveAnalysis<T>& psd) {
 }
 
 // σ² = M_2/M_0 − (M_1/M_0)², the volume-weighted variance of the diameter (seed 003 eq. 0.21,
-// which calls it the "standard deviation"). Negative for a non-realizable set.
+// which calls it the "standard deviation"). Negative for a non-realizable set; NaN for fewer
+// than 3 moments.
 template <class T>
 FLUIDBED_HOST_DEVICE T variance(std::span<const T> m) {
+  if (m.size() < 3) return std::numeric_limits<T>::quiet_NaN();
   const T mean = m[1] / m[0];
   return m[2] / m[0] - mean * mean;
 }
 
-// φ = M_0, the solids volume fraction (1 − ε) of VDF moments.
+// φ = M_0, the solids volume fraction (1 − ε) of VDF moments; NaN for an empty set.
 template <class T>
 FLUIDBED_HOST_DEVICE T solids_volume_fraction(std::span<const T> m) {
-  return m[0];
+  return m.empty() ? std::numeric_limits<T>::quiet_NaN() : m[0];
 }
 
 // n_i = 6 φ_i/(π ξ_i³), the number of particles per unit volume in a class of volume fraction
@@ -271,21 +312,31 @@ FLUIDBED_HOST_DEVICE T class_number_density(const T& volume_fraction, const T& d
   return T(6) * volume_fraction / (boost::math::constants::pi<T>() * diameter * diameter * diameter);
 }
 
-// VDF moments from NDF moments: M_k = (π/6) μ_{k+3}, k = 0 … M.size() − 1, where
-// ndf_from_order_3[k] = μ_{k+3} (spheres; note §1.3).
+// VDF moments from NDF moments: M_k = (π/6) μ_{k+3}, k = 0 … vdf.size() − 1, where
+// ndf_from_order_3[k] = μ_{k+3} (spheres, whose particle volume is πξ³/6). Returns false (every
+// vdf[k] NaN) if ndf_from_order_3 has fewer entries than vdf.
 template <class T>
-FLUIDBED_HOST_DEVICE void vdf_from_ndf_moments(std::span<const T> ndf_from_order_3, std::span<T> vdf) {
-  FLUIDBED_EXPECTS(ndf_from_order_3.size() >= vdf.size());
+FLUIDBED_HOST_DEVICE bool vdf_from_ndf_moments(std::span<const T> ndf_from_order_3, std::span<T> vdf) {
+  if (ndf_from_order_3.size() < vdf.size()) {
+    detail::fill_with_nan(vdf);
+    return false;
+  }
   for (std::size_t k = 0; k < vdf.size(); ++k)
     vdf[k] = boost::math::constants::pi<T>() / T(6) * ndf_from_order_3[k];
+  return true;
 }
 
-// NDF moments from VDF moments: ndf_from_order_3[k] = μ_{k+3} = (6/π) M_k. (μ_0 … μ_2 are the
-// VDF moments of negative order M_{−3} … M_{−1}, which a set M_0 … does not contain.)
+// NDF moments from VDF moments: ndf_from_order_3[k] = μ_{k+3} = (6/π) M_k, k = 0 … vdf.size() − 1
+// (μ_0 … μ_2 are the VDF moments of negative order M_{−3} … M_{−1}, which a set M_0 … does not
+// contain). Returns false (every ndf_from_order_3[k] NaN) if it has fewer entries than vdf.
 template <class T>
-FLUIDBED_HOST_DEVICE void ndf_from_vdf_moments(std::span<const T> vdf, std::span<T> ndf_from_order_3) {
-  FLUIDBED_EXPECTS(ndf_from_order_3.size() >= vdf.size());
+FLUIDBED_HOST_DEVICE bool ndf_from_vdf_moments(std::span<const T> vdf, std::span<T> ndf_from_order_3) {
+  if (ndf_from_order_3.size() < vdf.size()) {
+    detail::fill_with_nan(ndf_from_order_3);
+    return false;
+  }
   for (std::size_t k = 0; k < vdf.size(); ++k) ndf_from_order_3[k] = T(6) * vdf[k] / boost::math::constants::pi<T>();
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -300,7 +351,7 @@ struct LognormalParameters {
 
 // m_k = m_0 exp(k μ + k² s²/2), k = 0 … out.size() − 1: a log-normal distribution of total
 // weight m_0. Realizable to any order for s² > 0; second differences of ln m_k are exactly s²
-// and third differences 0 (note §7.7).
+// and third differences 0.
 template <class T>
 FLUIDBED_HOST_DEVICE void lognormal_moments(const T& m0, const LognormalParameters<T>& p, std::span<T> out) {
   using std::exp;
@@ -310,7 +361,7 @@ FLUIDBED_HOST_DEVICE void lognormal_moments(const T& m0, const LognormalParamete
   }
 }
 
-// The log-normal sharing m_0, m_1, m_2 (seed 003's fallback; note §3.3): with r = m_1/m_0 and
+// The log-normal sharing m_0, m_1, m_2 (seed 003's fallback for a corrupted set): with r = m_1/m_0 and
 // q = m_0 m_2/m_1², s² = ln q and μ = ln r − s²/2, i.e. m_k = m_0 r^k q^{k(k−1)/2}.
 // Preconditions: m_0, m_1 > 0. s² < 0 (q < 1, i.e. m_0 m_2 < m_1²) means m_0 … m_2 are not
 // themselves realizable; the formula then describes no distribution (correction.hpp falls back

@@ -12,7 +12,8 @@
 // (R = all moments if none fails); on the real line β_k depends on m_0 … m_{2k}, and R = 2k
 // for the first β_k <= 0. R may be odd: m_0 … m_{2n} realizable on [0, ∞) is what a
 // Gauss–Radau rule with a node at 0 needs (adaptive.hpp). The Gauss rule uses ⌊R/2⌋ nodes.
-// This is the count OpenQBMM calls nRealizableMoments (anchors note §1.2), here with no
+// This is the count OpenQBMM calls nRealizableMoments (univariateMomentSet::checkRealizability
+// in src/quadratureMethods/momentSets/univariateMomentSet/univariateMomentSet.C), here with no
 // absolute threshold: the comparison is with 0 on exactly scaled moments.
 #pragma once
 
@@ -161,18 +162,21 @@ FLUIDBED_HOST_DEVICE void assess(Recurrence<T, N>& r, int requested, Support sup
 template <class T, int N>
 struct ScaledAnalysis {
   InversionStatus status = InversionStatus::invalid_input;  // ok, reduced or an input status
-  MomentScaling scaling;
-  Recurrence<T, N> recurrence;  // scaled; r.size levels passed, beta[size] the failing β if any
+  ScaledMoments<T, N> moments;  // m̃ and the scaling (size 0 when the input was not scaled)
+  // Scaled; every level Wheeler computed (entries beyond size included), r.size of them
+  // passed, beta[size] the failing β if any.
+  Recurrence<T, N> recurrence;
   int levels = 0;
   CoefficientScan<T, N> scan;
 };
 
-// The statuses the input alone decides, before scaling: invalid_input (a moment NaN or
-// infinite), zero_mass (every moment 0: an empty cell), not_realizable (m_0 <= 0, or an empty
-// cell with nonzero higher moments); ok otherwise (m_0 > 0 and every moment finite).
+// The statuses the input alone decides, before scaling: invalid_input (no moment, or a moment
+// NaN or infinite), zero_mass (every moment 0: an empty cell), not_realizable (m_0 <= 0, or an
+// empty cell with nonzero higher moments); ok otherwise (m_0 > 0 and every moment finite).
 template <class T>
 FLUIDBED_HOST_DEVICE InversionStatus input_status(std::span<const T> m) {
   using std::isfinite;
+  if (m.empty()) return InversionStatus::invalid_input;
   bool all_zero = true;
   for (const T& x : m) {
     if (!isfinite(x)) return InversionStatus::invalid_input;
@@ -182,31 +186,30 @@ FLUIDBED_HOST_DEVICE InversionStatus input_status(std::span<const T> m) {
   return m[0] > T(0) ? InversionStatus::ok : InversionStatus::not_realizable;
 }
 
+// The analysis of 1 … 2N moments (another count: invalid_input, nothing read).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE ScaledAnalysis<T, N> analyse(std::span<const T> m, Support support) {
-  FLUIDBED_EXPECTS(m.size() >= 1 && m.size() <= std::size_t(2 * N));
   ScaledAnalysis<T, N> a;
+  if (!count_within(m.size(), 1, 2 * N)) return a;
   a.status = input_status(m);
   if (a.status != InversionStatus::ok) {
     if (a.status == InversionStatus::not_realizable) a.scan.failing_value = m[0];
     return a;
   }
   const int count = int(m.size());
-  a.scaling = scaling_of(m);
-  T scaled[2 * N]{};
-  scale_moments(m, a.scaling, std::span<T>(scaled, m.size()));
-  if (!scaled_moments_in_range(m, std::span<const T>(scaled, m.size()))) {
+  a.moments = scaled_moments<T, N>(m);
+  if (!scaled_moments_in_range(m, a.moments.view())) {
     a.status = InversionStatus::invalid_input;
     return a;
   }
   if (count == 1) {  // m_0 > 0 alone: realizable, no node
-    a.recurrence.beta[0] = scaled[0];
+    a.recurrence.beta[0] = a.moments.values[0];
     a.scan.realizable_moments = 1;
     a.status = InversionStatus::ok;
     return a;
   }
   a.levels = (count + 1) / 2;
-  a.recurrence = wheeler_unscaled<T, N>(std::span<const T>(scaled, std::size_t(2 * a.levels)));
+  a.recurrence = wheeler_unscaled<T, N>(std::span<const T>(a.moments.values.data(), std::size_t(2 * a.levels)));
   a.scan = scan_coefficients(a.recurrence, a.levels, count, support);
   a.status = a.scan.realizable_moments == count ? InversionStatus::ok
              : a.scan.realizable_moments >= 2   ? InversionStatus::reduced
@@ -219,7 +222,7 @@ FLUIDBED_HOST_DEVICE ScaledAnalysis<T, N> analyse(std::span<const T> m, Support 
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T failing_value(const ScaledAnalysis<T, N>& a, Support support) {
   using std::ldexp;
-  return ldexp(a.scan.failing_value, failing_value_exponent(support, a.scaling));
+  return ldexp(a.scan.failing_value, failing_value_exponent(support, a.moments.scaling));
 }
 
 }  // namespace detail
@@ -252,50 +255,134 @@ struct RealizabilityReport {
   // Seed 003 check 1: Δ²_k = ln m_k − 2 ln m_{k+1} + ln m_{k+2}, k = 0 … size − 3, evaluated as
   // ln(m̃_k m̃_{k+2}/m̃_{k+1}²) on the scaled moments (no cancellation of large logarithms).
   // Only when every m_k > 0 (count 0 and log_convex false otherwise). Necessary, not sufficient
-  // beyond 4 moments (note §3.1): the printed seed-003 8-moment sets are log-convex and fail.
+  // beyond 4 moments (for m_0 … m_3 it is equivalent to the two Hankel conditions m_0 m_2 >= m_1²
+  // and m_1 m_3 >= m_2²; beyond, it is only the Cauchy–Schwarz inequality m_k m_{k+2} >= m_{k+1}²):
+  // the printed seed-003 8-moment sets are log-convex and fail.
   std::array<T, 2 * N> log_second_differences{};
   int log_second_difference_count = 0;
   bool log_convex = false;
 
   // Seed 003 check 2 (eq. 0.22): the Hankel–Hadamard determinants H_{2i} = det[m_{j+l}]_{0..i}
   // (a = 0) and H_{2i+1} = det[m_{j+l+1}]_{0..i} (a = 1), k = 0 … hankel_count − 1, as sign and
-  // ln|H_k| (the determinants themselves overflow: ~1e62 for 8 moments in µm). Never formed as
-  // determinants: with u_k = H_k/H_{k−2} (H_{−1} = H_{−2} = 1), the relation
-  //   ς_k = H_k H_{k−3}/(H_{k−1} H_{k−2})   (note §2.2, verified there)
-  // is u_k = ς_k u_{k−1}, u_0 = m_0; and ς_{2i−1}ς_{2i} = β_i gives the even ones from β alone.
-  // So H_k = u_k H_{k−2}, a product of the ζ (or β), stable and O(n). On the real line only the
-  // a = 0 determinants are conditions (odd entries have sign 0 there and are not tested).
-  // Available up to the last ζ (or β) computed.
+  // ln|H_k| (the determinants themselves overflow: ~1e62 for 8 moments in µm; ln|H_k| = −∞ for
+  // H_k = 0, sign 0). Never formed as determinants, and never from the ζ, which are 0 or ±∞ at
+  // the boundary of moment space (a zero mean: ζ_1 = 0, ζ_2 = ∞) where the determinants are
+  // finite: from the recurrence, the squared norms of the monic orthogonal polynomials
+  // (H_{2i}/H_{2i−2} = ⟨p_i, p_i⟩ = m_0 β_1 ⋯ β_i) and their values at 0
+  // (H_{2i+1}/H_{2i} = (−1)^{i+1} p_{i+1}(0)), exact identities of the moment functional that
+  // hold wherever the H_{2i} are nonzero, positive or not (Chihara (1978), An Introduction to
+  // Orthogonal Polynomials, Gordon and Breach, ch. I):
+  //   H_{2i} = H_{2i−2} m_0 β_1 ⋯ β_i,   H_{2i+1} = (−1)^{i+1} p_{i+1}(0) H_{2i},
+  //   p_{k+1}(0) = −α_k p_k(0) − β_k p_{k−1}(0),  p_0 = 1, p_{−1} = 0,  H_{−2} = 1;
+  // computed on the scaled recurrence as mantissa and binary exponent, then in the caller's
+  // units H_k = 2^(s(a + b(s − 1 + c))) H̃_k (s = ⌊k/2⌋ + 1 rows, c = k mod 2). Every H_k of the set
+  // is reported (k < size) up to the first one the recurrence does not determine (after an
+  // H_{2i} = 0 the next α is not finite). On the real line only the a = 0 determinants are
+  // conditions: hankel_positive ignores the odd ones there.
   std::array<T, 2 * N> log_abs_hankel{};
   std::array<int, 2 * N> hankel_sign{};
   int hankel_count = 0;
   bool hankel_positive = false;  // every tested determinant among the hankel_count is > 0
 };
 
-// The realizability test of m_0 … m_{size−1}, 1 <= size <= 2N, on the support. Reuses the
-// recurrence of recurrence.hpp (Wheeler on exactly scaled moments); no threshold.
+namespace detail {
+
+// A product kept as mantissa · 2^exponent, the mantissa within ±[1/2, 1) (or 0, or not finite):
+// the Hankel determinants leave the floating-point range where their factors do not.
+template <class T>
+struct WideProduct {
+  T mantissa = T(1);
+  int exponent = 0;
+  FLUIDBED_HOST_DEVICE void multiply(const T& factor, int factor_exponent = 0) {
+    using std::frexp;
+    using std::isfinite;
+    mantissa *= factor;
+    exponent += factor_exponent;
+    if (!isfinite(mantissa) || mantissa == T(0)) return;
+    int e = 0;
+    mantissa = frexp(mantissa, &e);
+    exponent += e;
+  }
+};
+
+// H_0 … H_{hankel_count − 1} of an analysed set with m_0 > 0 into the report (see
+// RealizabilityReport::log_abs_hankel).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE void hankel_determinants(const ScaledAnalysis<T, N>& a, Support support,
+                                              RealizabilityReport<T, N>& out) {
+  using std::abs;
+  using std::frexp;
+  using std::isfinite;
+  using std::ldexp;
+  using std::log;
+  const Recurrence<T, N>& r = a.recurrence;
+  const MomentScaling units = a.moments.scaling;
+  const T ln2 = log(T(2));
+  WideProduct<T> norm;  // H̃_{2i}/H̃_{2i−2} = m̃_0 β̃_1 ⋯ β̃_i
+  WideProduct<T> even;  // H̃_{2i}
+  T p = T(1), p_previous = T(0);  // p̃_i(0), p̃_{i−1}(0), times 2^−p_exponent
+  int p_exponent = 0;
+  out.hankel_positive = true;
+  for (int k = 0; k < int(a.moments.size); ++k) {
+    const int i = k / 2;
+    WideProduct<T> h;
+    if (k % 2 == 0) {
+      norm.multiply(i == 0 ? a.moments.values[0] : r.beta[std::size_t(i)]);
+      even.multiply(norm.mantissa, norm.exponent);
+      h = even;
+    } else {
+      const T next = -r.alpha[std::size_t(i)] * p - (i > 0 ? r.beta[std::size_t(i)] * p_previous : T(0));
+      p_previous = p;
+      p = next;
+      const T larger = abs(p) > abs(p_previous) ? abs(p) : abs(p_previous);
+      if (isfinite(larger) && larger > T(0)) {  // keep the pair within the range, exactly
+        int e = 0;
+        frexp(larger, &e);
+        p = ldexp(p, -e);
+        p_previous = ldexp(p_previous, -e);
+        p_exponent += e;
+      }
+      h = even;
+      h.multiply(i % 2 == 0 ? -p : p, p_exponent);
+    }
+    if (!isfinite(h.mantissa)) return;
+    const int rows = i + 1;
+    const int unit_exponent = rows * (units.weight_exponent + units.length_exponent * (rows - 1 + k % 2));
+    const int sign = h.mantissa > T(0) ? 1 : (h.mantissa < T(0) ? -1 : 0);
+    out.hankel_sign[std::size_t(k)] = sign;
+    out.log_abs_hankel[std::size_t(k)] = log(abs(h.mantissa)) + T(h.exponent + unit_exponent) * ln2;
+    if (support == Support::positive_half_line || k % 2 == 0) out.hankel_positive = out.hankel_positive && sign > 0;
+    out.hankel_count = k + 1;
+  }
+}
+
+}  // namespace detail
+
+// The realizability test of m_0 … m_{size−1}, 1 <= size <= 2N, on the support (another count:
+// invalid_input, nothing else filled). Reuses the recurrence of recurrence.hpp (Wheeler on
+// exactly scaled moments); no threshold.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE RealizabilityReport<T, N> realizability(std::span<const T> m,
                                                              Support support = Support::positive_half_line) {
-  using std::abs;
   using std::ldexp;
   using std::log;
   const detail::ScaledAnalysis<T, N> a = detail::analyse<T, N>(m, support);
   RealizabilityReport<T, N> out;
   out.status = a.status;
   out.failing_value = detail::failing_value(a, support);
+  // (invalid_input covers every count but 1 … 2N, so m[0] exists below)
   if (a.status == InversionStatus::invalid_input || !(m[0] > T(0))) return out;  // and zero_mass
-  const int b = a.scaling.length_exponent;
   out.realizable_moments = a.scan.realizable_moments;
   out.realizable_nodes = out.realizable_moments / 2;
   out.first_failing_index = a.scan.first_failing_index;
   out.recurrence = a.recurrence;
   out.recurrence.size = out.realizable_nodes;
   out.boundary_distance = detail::boundary_distance(a.recurrence, a.scan.zeta, out.realizable_moments, support);
-  unscale(out.recurrence, a.scaling);
+  unscale(out.recurrence, a.moments.scaling);
   out.recurrence.beta[0] = m[0];  // also when no level is realizable
   out.zeta_count = a.scan.zeta_count;
-  for (int j = 0; j < out.zeta_count; ++j) out.zeta[std::size_t(j)] = ldexp(a.scan.zeta[std::size_t(j)], b);
+  for (int j = 0; j < out.zeta_count; ++j)
+    out.zeta[std::size_t(j)] = ldexp(a.scan.zeta[std::size_t(j)], a.moments.scaling.length_exponent);
   // A realizable set whose mean or variance lies beyond the floating-point range ({2e-139,
   // 3.7e210, 1, …}) has its recurrence finite only in scaled units: invalid_input. (The ζ are
   // diagnostics, +∞ there where beyond the range.)
@@ -303,48 +390,19 @@ FLUIDBED_HOST_DEVICE RealizabilityReport<T, N> realizability(std::span<const T> 
     return RealizabilityReport<T, N>{};
 
   const int count = int(m.size());
-  T scaled[2 * N]{};
-  scale_moments(m, a.scaling, std::span<T>(scaled, m.size()));
+  const std::array<T, 2 * N>& scaled = a.moments.values;
   bool positive = true;
-  for (int k = 0; k < count; ++k) positive = positive && scaled[k] > T(0);
+  for (int k = 0; k < count; ++k) positive = positive && scaled[std::size_t(k)] > T(0);
   if (positive) {
     out.log_convex = true;
     out.log_second_difference_count = count >= 3 ? count - 2 : 0;
-    for (int k = 0; k + 2 < count; ++k) {
+    for (std::size_t k = 0; k + 2 < std::size_t(count); ++k) {
       const T d = log((scaled[k] / scaled[k + 1]) / (scaled[k + 1] / scaled[k + 2]));
-      out.log_second_differences[std::size_t(k)] = d;
+      out.log_second_differences[k] = d;
       out.log_convex = out.log_convex && d >= T(0);
     }
   }
-
-  // Hankel determinants through u_k (see the struct). ln|u| and the signs in caller's units.
-  const bool plus = support == Support::positive_half_line;
-  const int beta_count = a.recurrence.size < a.levels ? a.recurrence.size + 1 : a.recurrence.size;  // β_k, k < this
-  T log_u = log(m[0]);
-  int sign_u = 1;
-  out.hankel_positive = true;
-  for (int k = 0; k < count; ++k) {
-    if (k >= 1) {
-      if (plus) {
-        if (k > out.zeta_count) break;
-        const T z = out.zeta[std::size_t(k - 1)];
-        log_u += log(abs(z));
-        sign_u *= z > T(0) ? 1 : (z < T(0) ? -1 : 0);
-      } else if (k % 2 == 0) {
-        if (k / 2 >= beta_count) break;
-        const T beta = ldexp(a.recurrence.beta[std::size_t(k / 2)], 2 * b);  // u_{2i} = u_{2i−2} β_i
-        log_u += log(abs(beta));
-        sign_u *= beta > T(0) ? 1 : (beta < T(0) ? -1 : 0);
-      }
-    }
-    const int sign_h2 = k >= 2 ? out.hankel_sign[std::size_t(k - 2)] : 1;  // H_{−2} = H_{−1} = 1
-    const T log_h2 = k >= 2 ? out.log_abs_hankel[std::size_t(k - 2)] : T(0);
-    const bool tested = plus || k % 2 == 0;
-    out.hankel_sign[std::size_t(k)] = tested ? sign_u * sign_h2 : 0;
-    out.log_abs_hankel[std::size_t(k)] = tested ? log_u + log_h2 : T(0);
-    if (tested) out.hankel_positive = out.hankel_positive && out.hankel_sign[std::size_t(k)] > 0;
-    out.hankel_count = k + 1;
-  }
+  detail::hankel_determinants(a, support, out);
   return out;
 }
 

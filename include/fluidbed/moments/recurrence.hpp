@@ -1,7 +1,7 @@
 // fluidbed — from moments to the three-term recurrence (the Jacobi matrix): Wheeler's
 // algorithm and Gordon's product-difference algorithm, with exact power-of-two scaling.
 //
-// Notation (seed 000 §5.7.2 and App. C; anchors-moments note §0):
+// Notation (seed 000 §5.7.2 and App. C):
 //   moments    m_k = ∫ x^k f(x) dx, k = 0 … 2n−1 (raw, dimensional, unnormalised)
 //   recurrence p_{k+1}(x) = (x − α_k) p_k(x) − β_k p_{k−1}(x), p_0 = 1, p_{−1} = 0
 //   Jacobi matrix J_n = tridiag(√β_k; α_k; √β_k); its eigenvalues are the n Gauss nodes
@@ -110,20 +110,24 @@ FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
 // or underflow for sets spanning the range ({2.9e61, 2.8e-279, 5.6e-188}); so a change of
 // units by powers of two changes it by exactly those powers. Any power of two near the
 // length scale serves: every step of the pipeline commutes exactly with such a scaling.
-// Preconditions: m has at least 1 element and m_0 > 0 finite (the callers check; see
-// inversion.hpp).
+// Total: the identity scaling {0, 0} for an empty set or one whose m_0 is not > 0 and finite
+// (which no entry point scales: they report it first), and a moment m_1 or m_2 that is not
+// finite gives no length scale.
 template <class T>
 FLUIDBED_HOST_DEVICE MomentScaling scaling_of(std::span<const T> m) {
   using std::abs;
-  FLUIDBED_EXPECTS(!m.empty() && m[0] > T(0));
+  using std::isfinite;
   MomentScaling s;
+  if (m.empty() || !(m[0] > T(0)) || !isfinite(m[0])) return s;
   s.weight_exponent = detail::nearest_power_of_two_exponent(m[0]);
   constexpr int none = std::numeric_limits<int>::min();
+  const auto gives_scale = [&](std::size_t k) { return m.size() > k && m[k] != T(0) && isfinite(m[k]); };
   const int from_mean =
-      m.size() > 1 && m[1] != T(0) ? detail::nearest_power_of_two_exponent(abs(m[1])) - s.weight_exponent : none;
+      gives_scale(1) ? detail::nearest_power_of_two_exponent(abs(m[1])) - s.weight_exponent : none;
   // ⌈e/2⌉ for the exponent e of m_2/m_0, as a shift: (e + 1) >> 1 rounds toward −∞ for e < 0 too.
   const int from_second =
-      m.size() > 2 && m[2] > T(0) ? (detail::nearest_power_of_two_exponent(m[2]) - s.weight_exponent + 1) >> 1 : none;
+      gives_scale(2) && m[2] > T(0) ? (detail::nearest_power_of_two_exponent(m[2]) - s.weight_exponent + 1) >> 1
+                                    : none;
   const int length = from_mean > from_second ? from_mean : from_second;
   s.length_exponent = length == none ? 0 : length;
   return s;
@@ -171,9 +175,47 @@ FLUIDBED_HOST_DEVICE T times_power_of_two(const T& x, const T& power, int e) {
 
 }  // namespace detail
 
-// m̃_k = m_k 2^−(a + k b), exactly (the factors 2^−(a + k b) are exact running products).
+namespace detail {
+
+// Every entry of `out` NaN: what the functions that fill a caller's span leave there when the
+// span sizes do not match (they also return false), so that ignoring the failure cannot go
+// unnoticed downstream (NaN moments are invalid_input for every inversion).
 template <class T>
-FLUIDBED_HOST_DEVICE void scale_moments(std::span<const T> m, MomentScaling s, std::span<T> scaled) {
+FLUIDBED_HOST_DEVICE void fill_with_nan(std::span<T> out) {
+  for (T& x : out) x = std::numeric_limits<T>::quiet_NaN();
+}
+
+// The parity a moment count must have.
+enum class Parity { any, even, odd };
+
+// Whether an entry point that takes `lowest` … `highest` moments of the given parity takes
+// `count` of them. Every entry point that takes a span of moments checks its count so, at every
+// optimisation level, before it reads an element: a count it does not take is a status (or an
+// empty result), never an access beyond its storage and never a moment silently dropped.
+FLUIDBED_HOST_DEVICE constexpr bool count_within(std::size_t count, std::size_t lowest, std::size_t highest,
+                                                 Parity parity = Parity::any) {
+  const bool parity_ok = parity == Parity::any || (count % 2 == 0) == (parity == Parity::even);
+  return count >= lowest && count <= highest && parity_ok;
+}
+
+// Whether the size of a Recurrence or a Quadrature is one its storage holds: 0 … N. Every
+// function taking one treats another size (no function of the library makes one) as no rule.
+template <template <class, int> class Rule, class T, int N>
+FLUIDBED_HOST_DEVICE constexpr bool size_in_storage(const Rule<T, N>& r) {
+  return r.size >= 0 && r.size <= N;
+}
+
+}  // namespace detail
+
+// m̃_k = m_k 2^−(a + k b), k < m.size(), exactly (the factors 2^−(a + k b) are exact running
+// products) into the first m.size() entries of `scaled`. Returns false, with every entry of
+// `scaled` NaN, if `scaled` has fewer entries than m.
+template <class T>
+FLUIDBED_HOST_DEVICE bool scale_moments(std::span<const T> m, MomentScaling s, std::span<T> scaled) {
+  if (scaled.size() < m.size()) {
+    detail::fill_with_nan(scaled);
+    return false;
+  }
   const T step = detail::power_of_two<T>(-s.length_exponent);
   T factor = detail::power_of_two<T>(-s.weight_exponent);
   for (std::size_t k = 0; k < m.size(); ++k) {
@@ -181,12 +223,40 @@ FLUIDBED_HOST_DEVICE void scale_moments(std::span<const T> m, MomentScaling s, s
     scaled[k] = detail::times_power_of_two(m[k], factor, e);
     factor *= step;
   }
+  return true;
 }
 
-// Undoes scale_moments on a recurrence: α·2^b, β_k·2^(2b) (k >= 1), β_0 = m_0·2^a.
+namespace detail {
+
+// m_0 … m_{size−1} scaled by scaling_of(m) (scale_moments), in value-initialized storage for the
+// 2N moments of an N-node entry point (entries from size on are 0). The callers check the count
+// first; one above 2N gives size 0.
+template <class T, int N>
+struct ScaledMoments {
+  std::array<T, 2 * N> values{};
+  std::size_t size = 0;
+  MomentScaling scaling;
+  FLUIDBED_HOST_DEVICE std::span<const T> view() const { return std::span<const T>(values.data(), size); }
+};
+
+template <class T, int N>
+FLUIDBED_HOST_DEVICE ScaledMoments<T, N> scaled_moments(std::span<const T> m) {
+  ScaledMoments<T, N> s;
+  if (m.size() > s.values.size()) return s;
+  s.size = m.size();
+  s.scaling = scaling_of(m);
+  scale_moments(m, s.scaling, std::span<T>(s.values.data(), s.size));
+  return s;
+}
+
+}  // namespace detail
+
+// Undoes scale_moments on a recurrence: α·2^b, β_k·2^(2b) (k >= 1), β_0 = m_0·2^a. A
+// recurrence whose size is not within 0 … N is left unchanged.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE void unscale(Recurrence<T, N>& r, MomentScaling s) {
   using std::ldexp;
+  if (!detail::size_in_storage(r)) return;
   for (int k = 0; k < r.size; ++k) {
     r.alpha[k] = ldexp(r.alpha[k], s.length_exponent);
     r.beta[k] = ldexp(r.beta[k], k == 0 ? s.weight_exponent : 2 * s.length_exponent);
@@ -247,21 +317,23 @@ FLUIDBED_HOST_DEVICE void wheeler_levels(const V* m, int n, V* alpha, V* beta) {
 }  // namespace detail
 
 // Wheeler (1974), Rocky Mountain J. Math. 4, 287–296, doi:10.1216/RMJ-1974-4-2-287, with
-// ordinary moments (the modified-moment coefficients zero); seed 003 ref. 43, written out in
-// the seeds' note §2.3:
+// ordinary moments (the modified-moment coefficients zero); seed 003 ref. 43, described in
+// neither seed:
 //   σ_{−1,l} = 0, σ_{0,l} = m_l;  a_0 = m_1/m_0
 //   σ_{k,l} = σ_{k−1,l+1} − a_{k−1} σ_{k−1,l} − b_{k−1} σ_{k−2,l},  l = k … 2n−k−1
 //   a_k = σ_{k,k+1}/σ_{k,k} − σ_{k−1,k}/σ_{k−1,k−1},  b_k = σ_{k,k}/σ_{k−1,k−1}
-// Computes the first n = m.size()/2 (<= N) levels on the moments as given (no scaling; see
-// recurrence() for the scaled entry point). result.size is the first k with b_k <= 0 or not
-// finite (the set is not realizable on the real line beyond k nodes), and beta[k] holds
-// that b_k; n when every b_k passes.
+// (σ_{k,l} = ∫ x^l p_k dμ; a_k, b_k are the α_k, β_k of product-difference, as the tests check).
+// Computes the n = m.size()/2 levels of 2n moments, 1 <= n <= N, on the moments as given (no
+// scaling; see recurrence() for the scaled entry point). result.size is the first k with
+// b_k <= 0 or not finite (the set is not realizable on the real line beyond k nodes), and
+// beta[k] holds that b_k; n when every b_k passes. Another count (odd, 0, above 2N) gives an
+// empty recurrence (size 0) without reading m.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> wheeler_unscaled(std::span<const T> m) {
   using std::isfinite;
-  const int n = int(m.size() / 2);
-  FLUIDBED_EXPECTS(n >= 1 && n <= N);
   Recurrence<T, N> r;
+  if (!detail::count_within(m.size(), 2, 2 * N, detail::Parity::even)) return r;
+  const int n = int(m.size() / 2);
   detail::wheeler_levels<T, N>(m.data(), n, r.alpha.data(), r.beta.data());
   r.size = n;
   for (int k = 1; k < n; ++k)
@@ -274,11 +346,12 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> wheeler_unscaled(std::span<const T> m) {
 
 // The Stieltjes coefficients ζ_1 … ζ_{2n−1} of a recurrence (ζ_1 = α_0, ζ_{2k} = β_k/ζ_{2k−1},
 // ζ_{2k+1} = α_k − ζ_{2k}); zeta[j−1] holds ζ_j. A zero ζ makes the following ones undefined
-// (±∞ or NaN): realizability tests stop at the first ζ <= 0.
+// (±∞ or NaN): realizability tests stop at the first ζ <= 0. All 0 for a recurrence of size 0
+// (or a size not within 0 … N).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE std::array<T, 2 * N> stieltjes_coefficients(const Recurrence<T, N>& r) {
   std::array<T, 2 * N> zeta{};
-  if (r.size < 1) return zeta;
+  if (r.size < 1 || !detail::size_in_storage(r)) return zeta;
   zeta[0] = r.alpha[0];
   for (int k = 1; k < r.size && k < N; ++k) {  // k < N follows from size <= N; GCC 12 -O3 needs it said
     zeta[2 * k - 1] = r.beta[k] / zeta[2 * k - 2];
@@ -305,16 +378,19 @@ FLUIDBED_HOST_DEVICE T quotient_of_product(const T& u, const T& a, const T& b) {
 
 // Gordon's product-difference algorithm: Gordon (1968), J. Math. Phys. 9, 655–663,
 // doi:10.1063/1.1664624; McGraw (1997), Aerosol Sci. Technol. 27, 255–265,
-// doi:10.1080/02786829708965471; seed 000 eqs. 5.87–5.91 (note §2.2). Seed eq. 5.88 prints
+// doi:10.1080/02786829708965471; seed 000 eqs. 5.87–5.91. Seed eq. 5.88 prints
 // "g_{p,2ν+1} = 0" for the last entry of the second column; it is g_{2ν+1,2} = 0 (the matrix
-// is (2ν+1)²; verified by the note's implementation). The first row of the matrix G gives
+// is (2ν+1)²; so corrected, the algorithm gives Wheeler's α_k, β_k, which the 60-digit generator
+// tests/reference/moments_reference.py checks). The first row of the matrix G gives
 //   ζ_k = g_{1,k+2} / (g_{1,k+1} g_{1,k}),  k = 1 … 2n−1,
 // then α_k = ζ_{2k} + ζ_{2k+1} (ζ_0 = 0) and β_k = ζ_{2k} ζ_{2k−1} (eq. 5.91; β without the
 // square root, which the Jacobi matrix takes).
 //
 // Why textbook PD fails, and the fix. The first-row entries are products of Hankel
 // determinants whose decimal exponents grow like Fibonacci numbers: in SI units (sizes
-// ~1e-4 m) they leave the double range from n = 5 (anchors note §5.2). Each column q is
+// ~1e-4 m) they leave the double range from n = 5 (for gamma(2.5, θ = 1e-4 m) the decimal
+// exponents of the first row run 0, 0, −4, −8, −15, −26, −44, −74, −121, −198, −322 over
+// columns 1 … 11: column 11, which n = 5 needs, is below the normal range). Each column q is
 // therefore stored as c_q 2^(E_q) with c_q renormalised by an exact power of two r_q after it
 // is formed. Since column q is bilinear in columns q−1 and q−2, E_q = E_{q−1} + E_{q−2} + r_q,
 // and the ratio above needs only r_{k+2}: ζ_k = c_{1,k+2}/(c_{1,k+1} c_{1,k}) · 2^(r_{k+2}).
@@ -337,8 +413,9 @@ FLUIDBED_HOST_DEVICE T quotient_of_product(const T& u, const T& a, const T& b) {
 // stops after k + 1 levels with beta[k+1] NaN (invert() reports a reduced rule with that NaN as
 // the failing value), where Wheeler, which divides by σ_{k,k} ∝ H_{2k} > 0, goes on. Near such
 // a set α_{k+1} = ζ_{2k+2} + ζ_{2k+3} cancels two large ζ of opposite sign. Wheeler's algorithm
-// is therefore the one for the real line. Computes n = m.size()/2 (<= N) levels on the moments
-// as given.
+// is therefore the one for the real line. Computes the n = m.size()/2 levels of 2n moments,
+// 1 <= n <= N, on the moments as given; another count gives an empty recurrence (size 0, and
+// *zeta_out all 0) without reading m.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<const T> m,
                                                                  std::array<T, 2 * N>* zeta_out = nullptr) {
@@ -347,8 +424,11 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   using std::isfinite;
   using std::isnormal;
   using std::ldexp;
+  if (!detail::count_within(m.size(), 2, 2 * N, detail::Parity::even)) {
+    if (zeta_out) *zeta_out = {};
+    return {};
+  }
   const int n = int(m.size() / 2);
-  FLUIDBED_EXPECTS(n >= 1 && n <= N);
   constexpr int R = 2 * N + 1;
   const int rows = 2 * n + 1;
   T before[R]{};  // column q−2
@@ -412,19 +492,19 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
 // Which algorithm computes the recurrence.
 enum class RecurrenceAlgorithm { wheeler, product_difference };
 
-// The recurrence of the first n = m.size()/2 (<= N) nodes, computed on exactly scaled
-// moments and unscaled on output. Preconditions: m.size() >= 2 even, m_0 > 0 finite.
+// The recurrence of the n = m.size()/2 nodes of 2n moments, 1 <= n <= N, computed on exactly
+// scaled moments and unscaled on output (size as wheeler_unscaled()). An empty recurrence
+// (size 0) for another count or for m_0 not > 0 and finite, which have none; the statuses of
+// invert() and realizability() say which.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE Recurrence<T, N> recurrence(std::span<const T> m,
                                                  RecurrenceAlgorithm algorithm = RecurrenceAlgorithm::wheeler) {
-  FLUIDBED_EXPECTS(m.size() >= 2 && m.size() <= std::size_t(2 * N) && m.size() % 2 == 0);
-  const MomentScaling s = scaling_of(m);
-  T scaled[2 * N];
-  scale_moments(m, s, std::span<T>(scaled, m.size()));
-  const std::span<const T> view(scaled, m.size());
-  Recurrence<T, N> r = algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(view)
-                                                                 : product_difference_unscaled<T, N>(view);
-  unscale(r, s);
+  using std::isfinite;
+  if (!detail::count_within(m.size(), 2, 2 * N, detail::Parity::even) || !(m[0] > T(0)) || !isfinite(m[0])) return {};
+  const detail::ScaledMoments<T, N> s = detail::scaled_moments<T, N>(m);
+  Recurrence<T, N> r = algorithm == RecurrenceAlgorithm::wheeler ? wheeler_unscaled<T, N>(s.view())
+                                                                 : product_difference_unscaled<T, N>(s.view());
+  unscale(r, s.scaling);
   return r;
 }
 
