@@ -17,6 +17,14 @@
 // each law's homogeneous-bed voidage at this u_s is where its curve crosses the line; the table
 // lists them beside Richardson–Zaki's (eqs. 3.22, 3.24).
 //
+// The plots (drag_laws_fcc_in_air.png, drag_laws_glass_in_water.png): per system, three panels
+// (packed-bed and constant-exponent laws; voidage functions on a single-sphere C_D; fits to
+// simulations of fixed arrays), each law in its own colour, marker and dash, thick where the
+// state lies inside the validity range the law declares (ValidityRange: ε and Re), thin dotted
+// outside it; the legend gives that range and the law's homogeneous-bed voidage ε_eq, marked
+// where the curve meets the weight line; Richardson–Zaki's ε is the vertical line. β is in the
+// classical-buoyancy convention, as the y axis says (codes with −φ∇p buoyancy use ε β).
+//
 // Checks (the program fails if one does not hold):
 //   - Stokes limit: as ε → 1 and Re → 0 (φ = 1e-10, Re = 1e-12) F tends to 1 for every law whose
 //     single-sphere drag is Stokes's (Schiller–Naumann C_D Re → 24, and the lattice-Boltzmann
@@ -24,9 +32,14 @@
 //     ψ(1) = 0.99394 for Gidaspow's arctan blend (Ergun keeps 0.6 % weight at ε = 1) and to 0 for
 //     Ergun (a packed-bed law); within 1e-3 (Tenneti's φ^⅓ term is 2e-4 at φ = 1e-10).
 //   - Gidaspow's switch at ε = 0.8: Ergun just below, Wen–Yu (α = 2.65) at 0.8, the blend exactly
-//     their mean there (relative 1e-12); the jump Wen–Yu/Ergun at 0.8 against the values of the
-//     seed 002 note §2.4 (0.8886, 0.9422, 0.9472, 0.5772, 0.2679 at Re = 0.1 … 1000; ± 6e-5,
-//     half a unit of their last digit).
+//     their mean there (relative 1e-12); the jump Wen–Yu/Ergun at 0.8, i.e.
+//     ¾ C_D Re ε^−1.65/(150 φ + 1.75 Re) of van der Hoef et al. (2006) eqs. (45)–(46) (seed 002)
+//     with the Schiller–Naumann C_D, evaluated independently in Python: 0.8886, 0.9422, 0.9472,
+//     0.5772, 0.2679 at Re = 0.1 … 1000 (± 6e-5, half a unit of their last digit).
+//   - What the plot draws: every law's equilibrium voidage ε_eq (the large marker) is where its F
+//     meets the weight line (relative 1e-8; at Gidaspow's jump the line passes between the two
+//     sides), and Lewis1949, left out of the plot, gives WenYuGidaspow's F at every plotted ε
+//     (relative 1e-15), as the legend says.
 //   - Mazzei–Lettieri's equilibrium voidage equals Richardson–Zaki's (relative 1e-9), and Ergun's
 //     minimum fluidization velocity at ε = 0.4 for the 137 µm FCC in air of seed 000 eq. 4.5
 //     (ρ_f 1.18, μ_f 1.81e-5) is the printed 8.73e-3 m/s (± 0.005e-3, its last digit).
@@ -38,6 +51,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "fluidbed/drag/any_drag_law.hpp"
@@ -49,6 +63,7 @@ namespace {
 using namespace fluidbed;
 using drag::AnyDragLaw;
 using drag::DragState;
+using drag::ValidityRange;
 
 struct System {
   const char* name;
@@ -71,7 +86,7 @@ const System systems[] = {
     {"glass beads (5.21 mm, 2351 kg/m³) in water, u_s = 0.111 m/s",
      "glass in water",
      "drag_laws_glass_in_water",
-     "[5:1000]",
+     "[1:1000]",
      {1005.0, 1.00e-3},
      {2351.0, 5.21e-3},
      0.111},
@@ -92,6 +107,26 @@ double weight_line(const System& s, double voidage) {
          (18 * s.fluid.viscosity * s.superficial_velocity);
 }
 
+constexpr double plotted_voidage_min = 0.35, plotted_voidage_max = 0.999;
+
+// The plot's grid: 0.35, 0.355, …, 0.995, 0.999.
+std::vector<double> plotted_voidages() {
+  std::vector<double> voidages;
+  for (int i = 0; i <= 130; ++i) voidages.push_back(std::min(plotted_voidage_min + 0.005 * i, plotted_voidage_max));
+  return voidages;
+}
+
+// True if the law's F meets the weight line at ε_eq: equal there, or, at the jump of Gidaspow's
+// switched law (where equilibrium_voidage returns the jump), between the two sides.
+bool meets_weight_line(const AnyDragLaw& law, const System& s, double equilibrium) {
+  const double weight = weight_line(s, equilibrium), at = dimensionless_force(law, s, equilibrium);
+  if (std::abs(at / weight - 1) <= 1e-8) return true;
+  const double below = dimensionless_force(law, s, std::nextafter(equilibrium, 0.0));
+  return std::holds_alternative<drag::GidaspowSwitched>(law) &&
+         equilibrium == drag::GidaspowSwitched::switch_voidage && std::min(at, below) <= weight &&
+         weight <= std::max(at, below);
+}
+
 // The limit of F as ε → 1 and Re → 0 each law should reach, and why.
 struct StokesLimit {
   double value;
@@ -110,49 +145,163 @@ StokesLimit stokes_limit(std::string_view name) {
   return {1.0, "Schiller-Naumann C_D Re -> 24"};
 }
 
-// Line styles for the plot: colour and dash type per law.
-const char* const colours[] = {"#000000", "#e69f00", "#56b4e9", "#009e73", "#0072b2", "#d55e00", "#cc79a7", "#999999"};
+double reynolds_of(const System& s) {
+  return s.fluid.density * s.superficial_velocity * s.particles.diameter / s.fluid.viscosity;
+}
 
-plot::Panel panel_of(const System& s) {
-  const double re = s.fluid.density * s.superficial_velocity * s.particles.diameter / s.fluid.viscosity;
-  char title[160];
-  std::snprintf(title, sizeof title, "%s (Re = %.3g)", s.name, re);
-  plot::Panel panel(title, "voidage ε",
-                    "F = β d_p^2 / (18 μ_f (1 − ε))   (drag / Stokes drag at the superficial slip)");
-  panel.log_y = true;
-  panel.xrange = "[0.35:1]";
-  panel.yrange = s.yrange;
-  panel.key = "outside right";
-  panel.commands = {"set format y '%g'"};
-  const int n = 131;
-  auto grid = [&](int i) { return 0.35 + 0.005 * i; };
-  // Gidaspow's switched law underneath, thick and light, so that its jump stands out.
-  int style = 0;
-  for (const AnyDragLaw& law : drag::all_drag_laws) {
-    const std::string name(drag::name_of(law));
-    if (name == "Lewis1949") continue;  // the same numbers as WenYuGidaspow (constant_exponent.hpp)
-    std::string how;
-    if (name == "GidaspowSwitched") {
-      how = "lines lw 7 lc rgb '#c8c8c8'";
-    } else {
-      how =
-          std::string("lines lw 2 lc rgb '") + colours[(style + style / 8) % 8] + "' dt " + (style < 8 ? "1" : "(6,4)");
-      ++style;
-    }
-    plot::Series& curve = panel.add(name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis1949)" : name, how);
-    for (int i = 0; i < n; ++i) {
-      const double e = std::min(grid(i), 0.999);
-      if (name == "GidaspowSwitched" && e >= 0.8 && grid(i - 1) < 0.8) {  // the jump, as a gap
-        curve.point(0.8 - 1e-9, dimensionless_force(law, s, 0.8 - 1e-9)).gap();
-        curve.point(0.8, dimensionless_force(law, s, 0.8));
-      }
-      curve.point(e, dimensionless_force(law, s, e));
-    }
+ValidityRange validity_of(const AnyDragLaw& law) {
+  return std::visit([](const auto& l) { return l.validity(); }, law);
+}
+
+// A Reynolds number bound for a legend: 300, 1000, 10^{4}.
+std::string bound_text(double re) {
+  char text[32];
+  const double decade = std::round(std::log10(re));
+  if (re >= 1e4 && re == std::pow(10.0, decade))
+    std::snprintf(text, sizeof text, "10^{%.0f}", decade);
+  else
+    std::snprintf(text, sizeof text, "%g", re);
+  return text;
+}
+
+// "ε 0.4–0.9, Re ≤ 1000": the range a law declares it was fitted or derived for.
+std::string validity_text(const ValidityRange& v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "ε %.2g–%.2g", v.voidage_min, v.voidage_max);
+  const std::string voidage = v.voidage_min <= 0 && v.voidage_max >= 1 ? "all ε" : text;
+  if (v.reynolds_min <= 0 && std::isinf(v.reynolds_max)) return voidage + ", all Re";
+  if (v.reynolds_min <= 0) return voidage + ", Re ≤ " + bound_text(v.reynolds_max);
+  return voidage + ", " + bound_text(v.reynolds_min) + " ≤ Re ≤ " + bound_text(v.reynolds_max);
+}
+
+bool within(const ValidityRange& v, double voidage, double re) {
+  return voidage >= v.voidage_min && voidage <= v.voidage_max && re >= v.reynolds_min && re <= v.reynolds_max;
+}
+
+// The plot's panels: the laws grouped by kind, at most six curves each. A law of the family
+// that no group names (a later addition) gets a panel of its own kind, "other laws".
+struct Group {
+  const char* title;
+  std::vector<std::string_view> laws;
+};
+
+const Group law_groups[] = {
+    {"Packed-bed and constant-exponent laws",
+     {"GidaspowSwitched", "Ergun", "WenYu1966", "Kmiec1982", "WenYuGidaspow", "GidaspowBlended"}},
+    {"Voidage functions on a single-sphere C_D",
+     {"DiFeliceDallavalle", "DiFeliceSchillerNaumann", "MazzeiLettieri", "SyamlalOBrien"}},
+    {"Fits to simulations of fixed random arrays", {"VanDerHoef2005", "Beetstra2007", "Tang2015", "Tenneti2011", "KochHill"}},
+};
+
+// One law's curve: a thick line where the state lies inside the law's declared validity, a thin
+// dotted one outside it (in ε, or all along when the Re of the system is outside), the same
+// colour and markers on both; and its homogeneous equilibrium, a large marker on the weight line.
+void add_law(plot::Panel& panel, const AnyDragLaw& law, int index, const System& s) {
+  const std::string name(drag::name_of(law));
+  const ValidityRange v = validity_of(law);
+  const double re = reynolds_of(s);
+  const bool switched = std::holds_alternative<drag::GidaspowSwitched>(law);
+  const double jump = drag::GidaspowSwitched::switch_voidage;
+
+  std::vector<double> voidages = plotted_voidages();
+  for (double bound : {v.voidage_min, v.voidage_max})
+    if (bound > plotted_voidage_min && bound < plotted_voidage_max) voidages.push_back(bound);
+  if (switched) voidages.push_back(std::nextafter(jump, 0.0));
+  std::sort(voidages.begin(), voidages.end());
+  voidages.erase(std::unique(voidages.begin(), voidages.end()), voidages.end());
+
+  // Gidaspow's switched law is Ergun below 0.8 and WenYuGidaspow from 0.8: drawn wide and grey
+  // underneath those two, so that its jump stands out.
+  const plot::Look look = plot::look(index);
+  const std::string inside_style = switched ? "lines lw 7 lc rgb '#d0d0d0'" : look.line(2.5);
+  const std::string outside_style = switched ? "lines lw 3 dt (2,3) lc rgb '#d0d0d0'" : look.line(1.2, "(2,3)");
+  std::optional<double> equilibrium = settling::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
+  std::string title = (name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis1949)" : name) + "   [" + validity_text(v) + "]";
+  char text[64];
+  if (!equilibrium)
+    std::snprintf(text, sizeof text, ": no bed");
+  else if (*equilibrium < plotted_voidage_min)
+    std::snprintf(text, sizeof text, ": ε_{eq} %.3f, off scale", *equilibrium);
+  else
+    std::snprintf(text, sizeof text, ": ε_{eq} %.3f", *equilibrium);
+  title += text;
+
+  bool any_inside = false;
+  for (double e : voidages) any_inside = any_inside || within(v, e, re);
+  plot::Series& inside = panel.add(any_inside ? title : "", inside_style);
+  plot::Series& outside = panel.add(any_inside ? "" : title, outside_style);
+  if (!switched) {
+    inside.with_markers(look.marker(), 14, 3 * index);
+    outside.with_markers(look.marker(1.0), 14, 3 * index);
   }
-  panel.add("buoyant weight (eq. 3.28)", "lines lw 4 lc 'black' dt (2,3)")
-      .point(0.35, weight_line(s, 0.35))
-      .point(1, weight_line(s, 1));
-  return panel;
+  for (std::size_t i = 0; i < voidages.size(); ++i) {
+    const double e = voidages[i];
+    if (switched && e == jump) inside.gap(), outside.gap();
+    const double f = dimensionless_force(law, s, e);
+    const bool in = within(v, e, re);
+    // A boundary sample belongs to both parts, so that the thick and the thin line meet.
+    const bool next_to_outside = (i > 0 && !within(v, voidages[i - 1], re)) ||
+                                 (i + 1 < voidages.size() && !within(v, voidages[i + 1], re));
+    if (in)
+      inside.point(e, f);
+    else
+      inside.gap();
+    if (!in || next_to_outside)
+      outside.point(e, f);
+    else
+      outside.gap();
+  }
+  if (equilibrium && *equilibrium >= plotted_voidage_min)
+    panel.add("", switched ? "points pt 7 ps 2.6 lc rgb '#a0a0a0'" : "points " + look.marker(2.2))
+        .point(*equilibrium, weight_line(s, *equilibrium));
+}
+
+std::vector<plot::Panel> panels_of(const System& s, std::optional<double> richardson_zaki) {
+  std::vector<plot::Panel> panels;
+  std::vector<int> drawn(std::size(law_groups) + 1, 0);
+  const auto panel_for = [&](std::size_t group) -> plot::Panel& {
+    while (panels.size() <= group) {
+      const std::size_t g = panels.size();
+      // The y axis, the same for all panels, is labelled once.
+      plot::Panel panel(g < std::size(law_groups) ? law_groups[g].title : "Other laws", "voidage ε [–]",
+                        g > 0 ? ""
+                              : "F = β d_p^2/(18 μ_f (1 − ε))  [–]:  drag / Stokes drag at the superficial slip\n"
+                                "β for classical buoyancy −(1 − ε) ρ_f g  (codes with −(1 − ε)∇p use ε β)");
+      panel.log_y = true;
+      panel.xrange = plot::range(plotted_voidage_min, 1);
+      panel.yrange = s.yrange;
+      panel.key = "below left Left reverse maxrows 12 font ',10'";
+      panel.commands = {"set format y '%g'"};
+      if (richardson_zaki) {
+        char text[120];
+        std::snprintf(text, sizeof text, "set arrow from %.4f, graph 0 to %.4f, graph 1 nohead dt 3 lw 1.5 lc 'black'",
+                      *richardson_zaki, *richardson_zaki);
+        panel.commands.push_back(text);
+        std::snprintf(text, sizeof text,
+                      "set label 'Richardson–Zaki ε = %.3f' at %.4f, graph 0.03 rotate by 90 offset -0.6,0 font ',10'",
+                      *richardson_zaki, *richardson_zaki);
+        panel.commands.push_back(text);
+      }
+      panels.push_back(std::move(panel));
+    }
+    return panels[group];
+  };
+  for (const AnyDragLaw& law : drag::all_drag_laws) {
+    const std::string_view name = drag::name_of(law);
+    if (name == "Lewis1949") continue;  // WenYuGidaspow's numbers, checked in main()
+    std::size_t group = std::size(law_groups);
+    for (std::size_t g = 0; g < std::size(law_groups); ++g)
+      if (std::find(law_groups[g].laws.begin(), law_groups[g].laws.end(), name) != law_groups[g].laws.end()) group = g;
+    add_law(panel_for(group), law, drawn[group]++, s);
+  }
+  for (plot::Panel& panel : panels) {
+    panel.add("buoyant weight (ρ_p − ρ_f) g d_p^2 ε/(18 μ_f u_s)", "lines lw 1.5 lc 'black'")
+        .point(plotted_voidage_min, weight_line(s, plotted_voidage_min))
+        .point(1, weight_line(s, 1));
+    panel.add_legend("thin dotted: outside the law's declared validity [ε, Re]", "lines lw 1.2 dt (2,3) lc 'black'");
+    panel.add_legend("large marker: curve meets weight, homogeneous bed ε_{eq} (eq. 3.28)", "points pt 6 ps 2 lc 'black'");
+  }
+  return panels;
 }
 
 }  // namespace
@@ -165,7 +314,7 @@ int main(int argc, char** argv) {
   int failures = 0;
   const double table_voidages[] = {0.40, 0.50, 0.60, 0.79, 0.80, 0.95};
   for (const System& s : systems) {
-    const double re = s.fluid.density * s.superficial_velocity * s.particles.diameter / s.fluid.viscosity;
+    const double re = reynolds_of(s);
     const std::optional<double> rz =
         settling::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles);
     std::printf("%s (Re = %.4g); Richardson-Zaki eps = %.4f\n", s.short_name, re, rz ? *rz : -1.0);
@@ -183,13 +332,26 @@ int main(int argc, char** argv) {
         std::printf("   %.4f\n", *eq);
       else
         std::printf("   no bed\n");
+      if (eq && !meets_weight_line(law, s, *eq)) {
+        ++failures;
+        std::printf("  FAIL: F(eps_eq) = %.9g differs from the weight line's %.9g\n", dimensionless_force(law, s, *eq),
+                    weight_line(s, *eq));
+      }
       if (name == "MazzeiLettieri") {
         const bool ok = eq && rz && std::abs(*eq / *rz - 1) <= 1e-9;
         failures += !ok;
         if (!ok) std::printf("  FAIL: Mazzei-Lettieri's equilibrium voidage differs from Richardson-Zaki's\n");
       }
     }
-    std::printf("\n");
+    const AnyDragLaw lewis = drag::make_drag_law("Lewis1949"), gidaspow_wen_yu = drag::make_drag_law("WenYuGidaspow");
+    double lewis_apart = 0;
+    for (double e : plotted_voidages())
+      lewis_apart =
+          std::max(lewis_apart, std::abs(dimensionless_force(lewis, s, e) / dimensionless_force(gidaspow_wen_yu, s, e) - 1));
+    failures += !(lewis_apart <= 1e-15);
+    std::printf("  every eps_eq: F meets the weight line there (the plot's markers); |Lewis1949/WenYuGidaspow - 1| = "
+                "%.1e over the plotted eps (<= 1e-15)%s\n\n",
+                lewis_apart, lewis_apart <= 1e-15 ? "" : "   FAIL");
   }
 
   std::printf("Stokes limit: F at eps = 1 - 1e-10, Re = 1e-12 (tolerance 1e-3)\n");
@@ -211,7 +373,7 @@ int main(int argc, char** argv) {
   std::printf("\nGidaspow's switch at eps = 0.8 (pressure-gradient beta; Re = rho_f eps w d/mu_f)\n");
   {
     const Fluid<double> unit{1.0, 1.0};
-    const double note_ratio[] = {0.8886, 0.9422, 0.9472, 0.5772, 0.2679};
+    const double expected_ratio[] = {0.8886, 0.9422, 0.9472, 0.5772, 0.2679};
     const double reynolds[] = {0.1, 1, 10, 100, 1000};
     for (int i = 0; i < 5; ++i) {
       const double e = 0.8, slip = reynolds[i] / e;
@@ -226,11 +388,11 @@ int main(int argc, char** argv) {
                               std::abs(switched_below / ergun_below - 1) <= 1e-12 &&
                               std::abs(blended / (0.5 * (ergun + wen_yu)) - 1) <= 1e-12;
       const double ratio = wen_yu / ergun;
-      const bool ok = identities && std::abs(ratio - note_ratio[i]) <= 6e-5;
+      const bool ok = identities && std::abs(ratio - expected_ratio[i]) <= 6e-5;
       failures += !ok;
       std::printf(
-          "  Re %-6g WenYu/Ergun = %.5f (note %.4f); switched = Ergun below, WenYu at 0.8; blend = mean: %s%s\n",
-          reynolds[i], ratio, note_ratio[i], identities ? "yes" : "NO", ok ? "" : "   FAIL");
+          "  Re %-6g WenYu/Ergun = %.5f (eqs. 45-46: %.4f); switched = Ergun below, WenYu at 0.8; blend = mean: %s%s\n",
+          reynolds[i], ratio, expected_ratio[i], identities ? "yes" : "NO", ok ? "" : "   FAIL");
     }
   }
 
@@ -250,7 +412,14 @@ int main(int argc, char** argv) {
 
   if (directory) {
     for (const System& s : systems) {
-      const std::string png = plot::render(*directory, s.file, {panel_of(s)}, 1150, 650);
+      char title[200];
+      std::snprintf(title, sizeof title,
+                    "Every drag law of the library against ε: %s; Re = ρ_f u_s d_p/μ_f = %.3g along every curve",
+                    s.name, reynolds_of(s));
+      const std::string png = plot::render(
+          *directory, s.file,
+          panels_of(s, settling::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles)),
+          {title, 0, 640, 860});
       if (!png.empty()) std::printf("plotted %s\n", png.c_str());
     }
   } else {

@@ -1,15 +1,20 @@
 // The voidage exponent ψ_e and the elastic modulus of the Mazzei–Lettieri closures against the
-// Reynolds number, parametric in ε: seed 000 (Mazzei, PhD thesis, UCL 2008).
+// Reynolds number, parametric in ε: seed 000 (Mazzei, PhD thesis, UCL 2008). Plots:
 //
-//   Fig. 3.4  ψ_e(ε, Re) = −ln φ/ln ε (eq. 3.64, φ of eq. 3.57, Table 3.1) against
-//             Re = ρ_f ε w d/μ_f, for ε = 0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 0.95 (the figure
-//             is missing from the seed and its ε family is unknown; its experimental points,
-//             Happel & Epstein 1954 and Rumpf & Gupte 1971, are not in the seed either), with
-//             Di Felice's α_d(Re) (eq. 3.48) and Wen & Yu's α = 2.70 for reference.
-//   Fig. 3.6  the model curves only: ψ_e beside the "equivalent exponent" of Ergun (eq. 3.32
-//             equated to eq. 3.65), α_d(Re) and α = 2.70, at ε = 0.40 and 0.80.
-//   eq. 3.112 the equilibrium elastic modulus E_r^e (eq. 3.111) over Jean–Fan's E_j (eq. 3.95),
-//             i.e. H(ε, Re_t)/(−4.8/ε) (eqs. 3.109, 4.38), against Re_t (= Re* at equilibrium).
+//   psi_e_mazzei_lettieri.png   ψ_e(ε, Re) = −ln φ_ML/ln ε (eq. 3.64; φ_ML is the thesis's
+//             voidage function φ of eq. 3.57, Table 3.1, renamed because φ is the solids fraction
+//             here) against Re = ρ_f ε w d/μ_f, for ε = 0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 0.95,
+//             with each curve's minimum, Di Felice's α_d(Re) (eq. 3.48) and Wen & Yu's α = 2.70.
+//             The thesis's Fig. 3.4 plots this quantity with measurements (Happel & Epstein
+//             1954, Rumpf & Gupte 1971) for an ε family it does not list; the figure is missing
+//             from the seed, so these are model curves only, not a reproduction of it.
+//   equivalent_exponents.png    ψ_e beside the "equivalent exponent" of Ergun (eq. 3.32 equated
+//             to eq. 3.65), α_d(Re) and α = 2.70, at ε = 0.40 and 0.80 (twice: on the scale of
+//             the other laws and on Ergun's, which reaches 8.7): the model curves of the
+//             thesis's Fig. 3.6, without its measurements.
+//   elastic_modulus_ratio.png   the equilibrium elastic modulus E_r^e (eq. 3.111) over Jean–Fan's
+//             E_j (eq. 3.95), i.e. H(ε, Re_t)/(−4.8/ε) (eqs. 3.109, 4.38), against Re_t (= Re* at
+//             equilibrium): eq. 3.112 states only its limits.
 //
 // What the thesis states (§3.4.4.3, §3.4.5, §3.5.3), compared:
 //   ψ_e → 2.80 as Re → 0 and Re → ∞ (eqs. 3.68, 3.71)                   |ψ_e − 2.80| <= 0.005
@@ -44,8 +49,6 @@ namespace {
 
 constexpr double voidages[] = {0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 0.95};
 constexpr int voidage_count = int(std::size(voidages));
-constexpr const char* colours[voidage_count] = {"#0072b2", "#009e73", "#56b4e9", "#e69f00",
-                                                "#d55e00", "#cc79a7", "#000000"};
 
 double psi_e(double voidage, double re) { return fluidbed::drag::MazzeiLettieri::equivalent_exponent(voidage, re); }
 
@@ -98,57 +101,87 @@ std::vector<double> log_grid(double from, double to, int per_decade) {
   return x;
 }
 
-std::string plot_psi_e(const std::string& directory) {
-  plot::Panel panel("Seed 000 Fig. 3.4: voidage exponent ψ_e(ε, Re) of the Mazzei–Lettieri drag (3.64)",
-                    "Re = ρ_f ε |u_f − v_p| d_p/μ_f", "ψ_e = −ln φ / ln ε");
+// ψ_e of eq. 3.64 with the symbol the thesis uses for the voidage function (φ there) renamed: in
+// the library φ is the solids fraction 1 − ε.
+const char* const psi_e_label =
+    "ψ_e = −ln φ_{ML} / ln ε  [–]\nφ_{ML}: voidage function of eq. 3.57 (not the solids fraction 1 − ε)";
+const char* const reynolds_label = "Re = ρ_f ε |u_f − v_p| d_p / μ_f  [–]";
+constexpr int markers_every = 24;  // samples between two markers of a curve (40 per decade)
+
+std::string plot_psi_e(const std::string& directory, const std::vector<Minimum>& minima) {
+  plot::Panel panel("Voidage exponent ψ_e(ε, Re) of the Mazzei–Lettieri drag (eq. 3.64): model curves",
+                    reynolds_label, psi_e_label);
   panel.log_x = true;
   panel.xrange = "[1e-3:1e5]";
   panel.yrange = "[1.8:3.0]";
-  panel.key = "bottom right";
+  panel.key = "bottom right font ',10'";
+  panel.commands = {
+      "set arrow from 1e-3, 1.90 to 1e5, 1.90 nohead lw 1 dt 3 lc 'gray30'",
+      "set arrow from 1e-3, 2.30 to 1e5, 2.30 nohead lw 1 dt 3 lc 'gray30'",
+      "set label 'Mazzei (2008) §3.4.5: minima from 1.90 (dense) …' at 1.5e-3, 1.875 font ',10'",
+      "set label '… to 2.30 (dilute)' at 1.5e-3, 2.275 font ',10'",
+  };
   const std::vector<double> re = log_grid(1e-3, 1e5, 40);
   for (int e = 0; e < voidage_count; ++e) {
-    plot::Series& s = panel.add(voidage_label(voidages[e]), std::string("lines lw 2 lc rgb '") + colours[e] + "'");
+    plot::Series& s = panel.add(voidage_label(voidages[e]), plot::look(e), markers_every, 3 * e);
     for (double r : re) s.point(r, psi_e(voidages[e], r));
   }
-  plot::Series& d = panel.add("Di Felice α_d (3.48)", "lines lw 2 dt 2 lc 'gray40'");
+  plot::Series& lows = panel.add("minimum over Re of each curve", "points pt 2 ps 2 lw 2 lc 'black'");
+  for (const Minimum& m : minima) lows.point(m.reynolds, m.value);
+  plot::Series& d = panel.add("Di Felice α_d(Re) = χ − 1 (3.48)", "lines lw 2.5 dt (6,3) lc 'gray50'");
   for (double r : re) d.point(r, alpha_d(r));
-  panel.add("Wen & Yu α = 2.70", "lines lw 1 dt 4 lc 'gray40'").point(1e-3, 2.7).point(1e5, 2.7);
+  panel.add("Wen & Yu α = 2.70", "lines lw 1.5 dt (2,2) lc 'gray50'").point(1e-3, 2.7).point(1e5, 2.7);
   panel.add("limit 2.80 (3.68, 3.71)", "lines lw 1 lc 'black'").point(1e-3, 2.8).point(1e5, 2.8);
-  return plot::render(directory, "psi_e_fig3_4", {panel});
+  return plot::render(directory, "psi_e_mazzei_lettieri", {panel});
 }
 
 std::string plot_equivalent_exponents(const std::string& directory) {
+  struct View {
+    double voidage;
+    const char* yrange;
+    const char* title;
+    const char* note;
+  };
+  // Ergun's exponent at ε = 0.80 climbs to 8.7: the third panel shows it on its own scale.
+  const View views[] = {
+      {0.40, "[1.8:3.0]", "ε = 0.40", ""},
+      {0.80, "[1.8:3.0]", "ε = 0.80", "Ergun leaves this scale above 3.0: see the right-hand panel"},
+      {0.80, "[1.5:9.5]", "ε = 0.80, scaled to Ergun's maximum (8.7)", ""}};
   std::vector<plot::Panel> panels;
   const std::vector<double> re = log_grid(1e-3, 1e5, 40);
-  for (double e : {0.40, 0.80}) {
-    char title[120];
-    std::snprintf(title, sizeof title, "Seed 000 Fig. 3.6 (model curves): voidage exponents at ε = %.2f", e);
-    plot::Panel panel(title, "Re = ρ_f ε |u_f − v_p| d_p/μ_f", "voidage exponent");
+  for (const View& v : views) {
+    plot::Panel panel(v.title, reynolds_label, "voidage exponent ψ of the law [–]");
     panel.log_x = true;
     panel.xrange = "[1e-3:1e5]";
-    panel.key = e < 0.5 ? "bottom right" : "top left";
-    if (e < 0.5) panel.yrange = "[1.5:3.0]";
-    plot::Series& ml = panel.add("Mazzei–Lettieri ψ_e (3.64)", "lines lw 2 lc rgb '#0072b2'");
-    for (double r : re) ml.point(r, psi_e(e, r));
-    plot::Series& er = panel.add("Ergun, equivalent exponent (3.32 = 3.65)", "lines lw 2 lc rgb '#d55e00'");
-    for (double r : re) er.point(r, fluidbed::settling::equivalent_exponent(fluidbed::drag::Ergun{}, e, r));
-    plot::Series& df = panel.add("Di Felice α_d(Re) (3.48)", "lines lw 2 dt 2 lc rgb '#009e73'");
+    panel.yrange = v.yrange;
+    panel.key = "below left Left reverse font ',10'";
+    if (*v.note) panel.commands = {std::string("set label '") + v.note + "' at graph 0.03, graph 0.96 font ',10'"};
+    plot::Series& ml = panel.add("Mazzei–Lettieri ψ_e (3.64)", plot::look(0), markers_every, 0);
+    for (double r : re) ml.point(r, psi_e(v.voidage, r));
+    plot::Series& er = panel.add("Ergun: the ψ that makes (3.65) equal (3.32)", plot::look(1), markers_every, 8);
+    for (double r : re)
+      er.point(r, fluidbed::settling::equivalent_exponent(fluidbed::drag::Ergun{}, v.voidage, r));
+    plot::Series& df = panel.add("Di Felice α_d(Re) = χ − 1 (3.48)", plot::look(2), markers_every, 16);
     for (double r : re) df.point(r, alpha_d(r));
-    panel.add("Wen & Yu α = 2.70", "lines lw 2 dt 4 lc 'black'").point(1e-3, 2.7).point(1e5, 2.7);
+    panel.add("Wen & Yu α = 2.70", "lines lw 2 dt (2,2) lc 'black'").point(1e-3, 2.7).point(1e5, 2.7);
     panels.push_back(panel);
   }
-  return plot::render(directory, "equivalent_exponents_fig3_6", panels, 800, 600);
+  return plot::render(directory, "equivalent_exponents", panels,
+                      {"Voidage exponent ψ of four drag laws against Re (β_{classical} = ¾ C_D ρ_f w (1 − ε) ε^{−ψ}/d_p, "
+                       "Dallavalle C_D): model curves",
+                       0, 620, 560});
 }
 
 std::string plot_modulus(const std::string& directory) {
   plot::Panel panel("Equilibrium elastic modulus of Mazzei–Lettieri over Jean–Fan's (eqs. 3.111, 3.95, 3.112)",
-                    "Re_t = ρ_f u_t d_p/μ_f  (= Re^* at equilibrium)", "E_r^e / E_j = H(ε, Re_t) / (−4.8/ε)");
+                    "Re_t = ρ_f u_t d_p / μ_f  [–]  (= Re^* at equilibrium)",
+                    "E_r^e / E_j = H(ε, Re_t) / (−4.8/ε)  [–]");
   panel.log_x = true;
   panel.xrange = "[1e-4:1e8]";
-  panel.key = "bottom left";
+  panel.key = "bottom left font ',10'";
   const std::vector<double> re = log_grid(1e-4, 1e8, 30);
   for (int e = 0; e < voidage_count; ++e) {
-    plot::Series& s = panel.add(voidage_label(voidages[e]), std::string("lines lw 2 lc rgb '") + colours[e] + "'");
+    plot::Series& s = panel.add(voidage_label(voidages[e]), plot::look(e), 20, 3 * e);
     for (double r : re) s.point(r, modulus_ratio(voidages[e], r));
   }
   panel.add("limit 1 (3.112)", "lines lw 1 dt 2 lc 'black'").point(1e-4, 1).point(1e8, 1);
@@ -160,8 +193,9 @@ std::string plot_modulus(const std::string& directory) {
 int main(int argc, char** argv) {
   const std::optional<std::string> directory = plot::output_directory(argc, argv);
   std::printf(
-      "Seed 000 Fig. 3.4: psi_e(eps, Re) = -ln phi/ln eps of the Mazzei-Lettieri drag (eqs. 3.57, 3.64, Table 3.1),\n"
-      "and eq. 3.112: equilibrium elastic modulus E_r^e (3.111) over Jean-Fan's E_j (3.95) against Re_t.\n\n");
+      "Seed 000: psi_e(eps, Re) = -ln phi_ML/ln eps of the Mazzei-Lettieri drag (eq. 3.64; phi_ML the voidage\n"
+      "function of eq. 3.57, Table 3.1; the quantity of the thesis's Fig. 3.4), and the equilibrium elastic modulus\n"
+      "E_r^e (3.111) over Jean-Fan's E_j (3.95) against Re_t (eq. 3.112).\n\n");
 
   const double table_re[] = {1e-4, 1e-2, 1, 10, 100, 1e3, 1e4, 1e6};
   std::printf("psi_e(eps, Re)\n  eps  |");
@@ -251,7 +285,7 @@ int main(int argc, char** argv) {
 
   if (directory) {
     for (const std::string& png :
-         {plot_psi_e(*directory), plot_equivalent_exponents(*directory), plot_modulus(*directory)})
+         {plot_psi_e(*directory, minima), plot_equivalent_exponents(*directory), plot_modulus(*directory)})
       if (!png.empty()) std::printf("plotted %s\n", png.c_str());
   } else {
     std::printf("(no output directory given: no plots)\n");

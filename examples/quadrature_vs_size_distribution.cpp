@@ -3,12 +3,12 @@
 // Gauss quadratures that fluidbed::moments::invert<N> recovers from M_0 … M_{2N−1} by Wheeler's
 // algorithm and by Gordon's product–difference algorithm (seed 000 eqs. 5.86–5.92).
 //
-//   log-normal   f_v = M_0/(ξ s √(2π)) exp(−(ln ξ − μ)²/(2 s²)), M_0 = 0.6 (solids fraction at
-//                ε = 0.4), median e^μ = 100 µm, s = 0.3 (note seed000-003 §7.7);
+//   log-normal   f_v = M_0/(ξ σ √(2π)) exp(−(ln ξ − μ)²/(2 σ²)), M_0 = 0.6 (solids fraction at
+//                ε = 0.4), median e^μ = 100 µm, σ = 0.3 (the spread of a narrow Geldart A cut);
 //   sieve cut    a Geldart A sieve analysis, apertures 45, 53, 63, 75, 90, 106, 125, 150 µm,
 //                mass fractions 0.05, 0.10, 0.20, 0.30, 0.20, 0.10, 0.05, the VDF uniform in each
-//                bin (seed 000 eq. E.7 = seed 003 eq. 0.17), ε = 0.4 (note §7.5(b); the seeds give
-//                their sieve data only as figures).
+//                bin (seed 000 eq. E.7 = seed 003 eq. 0.17), ε = 0.4 (an illustrative cut: the
+//                seeds give their sieve data only as figures).
 //
 // The moments are computed in SI units (metres), as a CFD code holds them, and printed in µm.
 // Checks (exit status non-zero if one fails):
@@ -18,8 +18,11 @@
 //     map from moments to nodes amplifies the rounding of the moments themselves, ~1e-16, by the
 //     condition number of the inversion, ~1e5 for four nodes on the narrow sieve cut; the two
 //     algorithms then differ by 6e-12, and each differs from the exact rule by ~2e-11);
-//   - the nodes and weights equal the independent 50-digit mpmath values of the note (§7.5(b),
-//     §7.7, printed there to 10–12 digits): relative 1e-9.
+//   - the nodes and weights equal the independent 50-digit mpmath values of
+//     tests/reference/moments_reference.py (cases lognormal_si and sieve_psd: Gauss rules of the
+//     measure itself, from the Stieltjes–Wigert recurrence of the log-normal and a Gauss–Legendre
+//     discretisation of each sieve bin, never from moment inversion), quoted to 10–12 digits:
+//     relative 1e-9.
 //
 //   quadrature_vs_size_distribution [output directory for the plots; none: no plots]
 #include <algorithm>
@@ -47,7 +50,7 @@ struct Node {
   double diameter_um, weight;
 };
 
-// Reference quadratures of the note (50-digit mpmath, PD and Wheeler agreeing to 45 digits).
+// Reference quadratures, tests/reference/moments_reference.py (50-digit mpmath from the measure).
 struct Reference {
   int nodes;
   Node values[max_nodes];
@@ -64,20 +67,20 @@ struct Distribution {
 };
 
 Distribution lognormal() {
-  Distribution d{"log-normal VDF, M_0 = 0.6, median 100 um, s = 0.3",
-                 "Log-normal volume density (M_0 = 0.6, median 100 µm, s = 0.3) and its Gauss quadratures",
+  Distribution d{"log-normal VDF, M_0 = 0.6, median 100 um, sigma = 0.3",
+                 "Log-normal volume density (M_0 = 0.6, median 100 µm, σ = 0.3 in ln ξ) and its Gauss quadratures",
                  "quadrature_lognormal",
                  {},
                  {},
                  {},
                  {}};
-  const double m0 = 0.6, median = 100 * micron, s = 0.3;
-  lognormal_moments(m0, LognormalParameters<double>{std::log(median), s * s}, std::span<double>(d.moments));
+  const double m0 = 0.6, median = 100 * micron, sigma = 0.3;
+  lognormal_moments(m0, LognormalParameters<double>{std::log(median), sigma * sigma}, std::span<double>(d.moments));
   for (int i = 0; i <= 400; ++i) {
     const double x_um = 20 + 0.75 * i;
-    const double z = (std::log(x_um * micron) - std::log(median)) / s;
+    const double z = (std::log(x_um * micron) - std::log(median)) / sigma;
     d.pdf_x_um.push_back(x_um);
-    d.pdf_y_um.push_back(m0 / (x_um * s * std::sqrt(2 * std::numbers::pi)) * std::exp(-0.5 * z * z));
+    d.pdf_y_um.push_back(m0 / (x_um * sigma * std::sqrt(2 * std::numbers::pi)) * std::exp(-0.5 * z * z));
   }
   d.references = {
       {2, {{84.3085669692, 0.428665621879}, {155.377383085, 0.171334378121}}},
@@ -161,7 +164,7 @@ void report(const Distribution& d, Outcome& out) {
   for (const Reference& r : d.references)
     if (r.nodes == N) reference = &r;
   double algorithms_apart = 0, reference_apart = 0;
-  std::printf("  N = %d     node [um]      weight      | note (mpmath)              | PD - Wheeler (rel.)\n", N);
+  std::printf("  N = %d     node [um]      weight      | mpmath reference           | PD - Wheeler (rel.)\n", N);
   for (int i = 0; i < N; ++i) {
     const double x = wheeler.quadrature.nodes[i], w = wheeler.quadrature.weights[i];
     const double dx = pd.quadrature.nodes[i] / x - 1, dw = pd.quadrature.weights[i] / w - 1;
@@ -177,7 +180,7 @@ void report(const Distribution& d, Outcome& out) {
   out.failures += !ok;
   std::printf(
       "     max_k<%d |M_k(quadrature)/M_k - 1|: Wheeler %.1e, PD %.1e (<= 1e-12); nodes/weights PD vs Wheeler %.1e\n"
-      "     (<= 1e-10), vs the note %.1e (<= 1e-9); M_%d, which no %d-node rule matches: %+.2f %%%s\n",
+      "     (<= 1e-10), vs mpmath %.1e (<= 1e-9); M_%d, which no %d-node rule matches: %+.2f %%%s\n",
       2 * N, wheeler_error, pd_error, algorithms_apart, reference_apart, 2 * N, N, 100 * wheeler_next,
       ok ? "" : "   FAIL");
 
@@ -186,12 +189,13 @@ void report(const Distribution& d, Outcome& out) {
   plot::Panel panel(title, "particle diameter ξ [µm]", "volume density f_v(ξ) [µm^{-1}]");
   panel.y2label = "quadrature weight φ_i [–]";
   panel.y2range = "[0:0.5]";
-  panel.xrange = plot::range(d.pdf_x_um.front(), d.pdf_x_um.back());
+  const double span = d.pdf_x_um.back() - d.pdf_x_um.front();
+  panel.xrange = plot::range(d.pdf_x_um.front() - 0.04 * span, d.pdf_x_um.back() + 0.04 * span);
   panel.yrange = plot::range(0, 1.2 * *std::max_element(d.pdf_y_um.begin(), d.pdf_y_um.end()));
   panel.key = "top right";
-  plot::Series& pdf = panel.add("f_v(ξ)", "lines lw 2 lc rgb '#0072b2'");
+  plot::Series& pdf = panel.add("f_v(ξ), left axis", "lines lw 2 lc rgb '#0072b2'");
   for (std::size_t i = 0; i < d.pdf_x_um.size(); ++i) pdf.point(d.pdf_x_um[i], d.pdf_y_um[i]);
-  plot::Series& spikes = panel.add("nodes ξ_i, weights φ_i", "impulses lw 4 lc rgb '#d55e00'");
+  plot::Series& spikes = panel.add("nodes ξ_i, weights φ_i, right axis", "impulses lw 4 lc rgb '#d55e00'");
   spikes.axes = "x1y2";
   plot::Series& heads = panel.add("", "points pt 7 ps 1.2 lc rgb '#d55e00'");
   heads.axes = "x1y2";
@@ -220,7 +224,7 @@ int main(int argc, char** argv) {
     failures += out.failures;
     std::printf("\n");
     if (directory) {
-      const std::string png = plot::render(*directory, d.file, out.panels, 620, 500, d.title);
+      const std::string png = plot::render(*directory, d.file, out.panels, {d.title, 0, 620, 500});
       if (!png.empty()) std::printf("plotted %s\n\n", png.c_str());
     }
   }

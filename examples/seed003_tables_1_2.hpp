@@ -1,8 +1,8 @@
-// Seed 003 (Mazzei, Marchisio & Lettieri, QMOM simulation of a polydisperse fluidized bed;
-// note seed000-003-moments §6.3–6.5), Tables 1 and 2: the volume-density-function moments
-// M_0 … M_7 of three ballotini powders (ρ_p 2500 kg/m³) computed from sieve analyses with
-// eq. 0.17 at ε = 0.400, and the two-, three- and four-node quadratures that Gordon's
-// product–difference algorithm gives for them, as printed:
+// Seed 003 (Mazzei, Marchisio & Lettieri 2012, AIChE J. 58, 3054–3069, doi:10.1002/aic.13714),
+// Tables 1 and 2: the volume-density-function moments M_0 … M_7 of three ballotini powders
+// (ρ_p 2500 kg/m³) computed from sieve analyses with eq. 0.17 at ε = 0.400, and the two-,
+// three- and four-node quadratures that Gordon's product–difference algorithm gives for them,
+// as printed:
 //   Table 1   powder A (lower layer; d_sv 88 µm, c.v. 0.16) and powder B (upper layer;
 //             d_sv 273 µm, c.v. 0.20). Its first part (M_0 … M_3, two nodes) is also seed 000
 //             Table 6.2.
@@ -18,7 +18,7 @@ namespace seed003 {
 
 struct Rule {
   int nodes;
-  std::array<double, 4> diameters;  // s_i [µm], printed as whole micrometres
+  std::array<double, 4> diameters;  // ξ_i [µm], printed as whole micrometres
   std::array<double, 4> weights;    // φ_i [–], printed to three decimals
 };
 

@@ -6,14 +6,20 @@
 #                                    liquid-fluidized systems (Richardson–Zaki, Wen–Yu, Ergun,
 #                                    Mazzei–Lettieri)
 #   minimum_bubbling_table_4_6       seed 000 Table 4.6: minimum bubbling voidage of fifteen
-#                                    Geldart A powders from three stability criteria
-#   voidage_ratio_vs_reynolds        seed 000 Figs 3.1–3.3, 3.5: ε_law/ε_R&Z against Re
-#   elastic_modulus_vs_reynolds      seed 000 Fig. 3.4 (ψ_e), Fig. 3.6 (model curves) and
-#                                    eq. 3.112 (E_r^e/E_j) against Re
-#   drag_laws_vs_voidage             every drag law against ε, FCC in air and glass in water
+#                                    Geldart A powders from three stability criteria; both roots
+#                                    of the stability functions of powder 1
+#   voidage_ratio_vs_reynolds        ε_law/ε_R&Z against Re for Ergun, Wen–Yu, Di Felice and
+#                                    Mazzei–Lettieri (the quantity of seed 000 Figs 3.1–3.3, 3.5)
+#   elastic_modulus_vs_reynolds      ψ_e and the equivalent exponents of four laws against Re (the
+#                                    model curves of seed 000 Figs 3.4, 3.6), E_r^e/E_j (eq. 3.112)
+#   drag_laws_vs_voidage             every drag law against ε, FCC in air and glass in water, with
+#                                    validity ranges and homogeneous-bed voidages
 #   quadrature_vs_size_distribution  2-, 3-, 4-node quadratures of a log-normal and a sieve PSD
-#   seed003_tables_1_2               seed 003 Tables 1–2: moments and published quadratures
-# The plots (PNG, gnuplot) are written to build/release/plots and listed at the end.
+#   seed003_tables_1_2               seed 003 Tables 1–2: moments and published quadratures, and
+#                                    the band of rules the printed digits allow
+# The plots (PNG, with their gnuplot scripts and data) are written to build/release/plots and
+# listed at the end. Each script redraws its PNG from any directory (gnuplot /path/to/x.gp);
+# the demo checks that on a copy of the directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
@@ -32,6 +38,20 @@ for example in "${examples[@]}"; do
   ./build/release/examples/"$example" "$plots" || failed+=("$example")
 done
 
+# Every script must redraw its picture beside itself when run from elsewhere (here /, on a copy
+# of the directory whose PNGs were removed), without a gnuplot warning.
+copy=$(mktemp -d)
+trap 'rm -rf "$copy"' EXIT
+cp "$plots"/*.gp "$plots"/*.dat "$copy"/
+for script in "$copy"/*.gp; do
+  name=$(basename "$script" .gp)
+  messages=$(cd / && gnuplot "$script" 2>&1) || true
+  if [ -n "$messages" ] || [ ! -s "$copy/$name.png" ]; then
+    echo "gnuplot $plots/$name.gp does not redraw $name.png from another directory:${messages:+ $messages}"
+    failed+=("$name.gp")
+  fi
+done
+
 echo
 echo "Pictures: $plots/*.png"
 for png in "$plots"/*.png; do [ -e "$png" ] && echo "  $png"; done
@@ -39,4 +59,5 @@ if ((${#failed[@]})); then
   echo "FAILED: ${failed[*]}"
   exit 1
 fi
-echo "All ${#examples[@]} examples reproduce their references within the stated tolerances."
+echo "All ${#examples[@]} examples reproduce their references within the stated tolerances;"
+echo "every plot script redraws its picture from any directory."
