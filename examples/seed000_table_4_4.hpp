@@ -18,7 +18,7 @@ struct System {
 };
 
 // Table 4.3 (water, g = 9.81). System 3's diameter is printed as 521 µm; it must be
-// 5.21 mm (seed note §8.2): with 521 µm, Dallavalle's u_t = 0.0661 m/s is below every
+// 5.21 mm: with 521 µm, Dallavalle's u_t = 0.0661 m/s is below every
 // listed velocity (0.0771–0.184 m/s), so no homogeneous bed could exist, and the text
 // places system 3 in the inertial regime (Re ≈ 400–960 with 5.21 mm, ≈ 4–10 with 521 µm).
 inline constexpr double system_3_printed_diameter = 521e-6;
@@ -34,7 +34,7 @@ struct Row {
   double mazzei_lettieri, wen_yu, ergun, richardson_zaki, experiment;  // ε columns
 };
 
-// Table 4.4 as printed (the t_e column omitted: a rough estimate, note §8.2).
+// Table 4.4 as printed (the t_e column, a rough estimate of the expansion time, omitted).
 inline constexpr std::array<Row, 14> table_4_4{{
     {1, 2.72e-3, 0.498, 0.525, 0.551, 0.504, 0.500},
     {1, 5.28e-3, 0.599, 0.617, 0.628, 0.604, 0.600},
@@ -53,7 +53,8 @@ inline constexpr std::array<Row, 14> table_4_4{{
 }};
 
 // |computed − printed| allowed per column, by system. The columns are computed as:
-//   R&Z   Richardson–Zaki with Dallavalle's u_t and n(Re_t) of eq. 3.24 (note §10 item 4);
+//   R&Z   Richardson–Zaki with Dallavalle's u_t and n(Re_t) of eq. 3.24 (a Schiller–Naumann
+//         u_t would put every ε_R&Z about 0.017 lower);
 //         worst 0.0011 (system 3, u = 0.184: 0.7189 against 0.720).
 //   M&L   the Mazzei–Lettieri drag at equilibrium, compared with the printed ε_R&Z: it
 //         reproduces Richardson–Zaki exactly. The printed ε_M&L column is CFD output and
@@ -62,7 +63,7 @@ inline constexpr std::array<Row, 14> table_4_4{{
 //   Ergun drag::Ergun.
 // Systems 2 and 3 reproduce W&Y and Ergun to 0.0017. System 1 does not: W&Y is off by
 // +0.0010, −0.0037, −0.0046, −0.0113 and Ergun by −0.0005, +0.0139, +0.0108, +0.0046
-// (computed − printed, rows 1–4). The reason is unknown (note §8.2: probably the CFD);
+// (computed − printed, rows 1–4). The reason is unknown (probably the thesis's CFD);
 // the tolerances below are what the data supports, not 0.002.
 struct Tolerance {
   double richardson_zaki, mazzei_lettieri, wen_yu, ergun;

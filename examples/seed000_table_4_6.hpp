@@ -52,8 +52,8 @@ inline constexpr std::array<BubblingRow, 24> table_4_6{{
     {13, 200, 0.507, 0.480, 0.532, 0.529}, {13, 300, 0.563, 0.503, 0.553, 0.551},
 }};
 
-// The gas. The thesis does not print its properties; these reproduce Table 4.6 (note
-// seed000-closures §8.5): air ρ = 1.205 kg/m³, μ = 1.81e-5 Pa s for powders 1–10 and for 13
+// The gas. The thesis does not print its properties; these reproduce the 20 °C rows of
+// Table 4.6 within 0.0012 (examples/minimum_bubbling_table_4_6 prints them): air ρ = 1.205 kg/m³, μ = 1.81e-5 Pa s for powders 1–10 and for 13
 // (with N₂ powder 13 comes out 0.004–0.005 low), N₂ ρ = 1.165, μ = 1.76e-5 at 20 °C for
 // 11, 12, 14, 15, and above 20 °C N₂ as an ideal gas at 101325 Pa with Sutherland's
 // viscosity (μ₀ = 1.663e-5 Pa s at 273.15 K, S = 107 K), which matches 100 °C and drifts low

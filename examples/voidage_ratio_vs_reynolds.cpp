@@ -12,7 +12,9 @@
 //
 // Parameter values. The figures themselves are missing from the seed (captions only), so their
 // ε_R&Z family and Re range are unknown; the thesis names ε = 0.40 and 0.80. Here ε_R&Z = 0.35,
-// 0.40, 0.50, 0.60, 0.70, 0.80, 0.90 and 10⁻³ <= Re <= 10⁵.
+// 0.40, 0.50, 0.60, 0.70, 0.80, 0.90 and 10⁻³ <= Re <= 10⁵: the plots (voidage_ratio_ergun,
+// _wen_yu, _di_felice, _mazzei_lettieri.png) show the quantity of Figs 3.1–3.3 and 3.5 for this
+// family, on one common scale; they are not reproductions of the figures.
 //
 // What the thesis states in words and numbers (§3.4.4, §3.4.5, Ch. 7 conclusions), compared:
 //   Ergun at ε = 0.40 agrees in the viscous and inertial limits           |ratio − 1| <= 5 %
@@ -51,8 +53,6 @@ using fluidbed::settling::voidage_ratio;
 
 constexpr double voidages[] = {0.35, 0.40, 0.50, 0.60, 0.70, 0.80, 0.90};
 constexpr int voidage_count = int(std::size(voidages));
-constexpr const char* colours[voidage_count] = {"#9400d3", "#0072b2", "#009e73", "#56b4e9",
-                                                "#e69f00", "#d55e00", "#000000"};
 constexpr double re_min = 1e-3, re_max = 1e5;
 constexpr int points_per_decade = 40;
 constexpr int re_points = 8 * points_per_decade + 1;
@@ -100,17 +100,30 @@ std::string voidage_label(double e) {
   return text;
 }
 
-std::string plot_figure(const std::string& directory, const std::string& name, const std::string& title,
-                        const std::string& symbol, const Curves& c, const std::string& yrange,
-                        std::vector<std::string> commands = {}) {
-  plot::Panel panel(title, "Re = ρ_f u_s d_p/μ_f", "ε_{" + symbol + "}/ε_{R&Z}");
+// One vertical scale for the four laws, so that they compare at a glance.
+constexpr const char* ratio_range = "[0.85:1.5]";
+
+// Wen & Yu's law, and Di Felice's as the thesis plugs it, use the Schiller–Naumann C_D (eq. 3.35),
+// which switches at Re = 1000 from 24(1 + 0.15 Re^0.687)/Re, still falling, to the constant 0.44,
+// while the Dallavalle C_D of Richardson–Zaki keeps falling: the ratio turns there (the V).
+const std::vector<std::string> schiller_naumann_switch = {
+    "set arrow from 1000, graph 0 to 1000, graph 1 nohead lw 1.5 dt 4 lc 'gray30'",
+    "set label 'at Re = 1000 the Schiller–Naumann C_D (3.35)' at 800, 1.47 right font ',10'",
+    "set label 'stops falling (constant 0.44), while Dallavalle''s' at 800, 1.45 right font ',10'",
+    "set label 'C_D of Richardson–Zaki goes on falling: the V' at 800, 1.43 right font ',10'",
+};
+
+std::string plot_ratio(const std::string& directory, const std::string& name, const std::string& title,
+                       const std::string& symbol, const Curves& c, std::vector<std::string> commands = {}) {
+  plot::Panel panel(title, "Re = ρ_f u_s d_p / μ_f  [–]   (u_s superficial velocity)",
+                    "ε_{" + symbol + "} / ε_{R&Z}  [–]");
   panel.log_x = true;
   panel.xrange = "[1e-3:1e5]";
-  panel.yrange = yrange;
-  panel.key = "top left";
+  panel.yrange = ratio_range;
+  panel.key = "top left font ',10'";
   panel.commands = std::move(commands);
   for (int e = 0; e < voidage_count; ++e) {
-    plot::Series& s = panel.add(voidage_label(voidages[e]), std::string("lines lw 2 lc rgb '") + colours[e] + "'");
+    plot::Series& s = panel.add(voidage_label(voidages[e]), plot::look(e), 24, 3 * e);
     for (int i = 0; i < re_points; ++i) {
       if (c[e][i])
         s.point(reynolds_at(i), *c[e][i]);
@@ -229,13 +242,12 @@ int main(int argc, char** argv) {
     check("W&Y, Di Felice: error grows as eps decreases (eps <= 0.6)", grows, detail);
     check("Di Felice reduces the W&Y deviation (eps <= 0.6)", reduced, "see the pairs above");
   }
-  {
-    double worst = 0;
-    for (const auto& curve : mazzei_lettieri)
-      for (const std::optional<double>& r : curve) worst = std::max(worst, r ? std::abs(*r - 1) : 1.0);
-    std::snprintf(text, sizeof text, "max |ratio - 1| = %.1e over the grid (<= 1e-9)", worst);
-    check("Mazzei-Lettieri ratio constantly equal to one (Fig. 3.5)", worst <= 1e-9, text);
-  }
+  double mazzei_lettieri_deviation = 0;
+  for (const auto& curve : mazzei_lettieri)
+    for (const std::optional<double>& r : curve)
+      mazzei_lettieri_deviation = std::max(mazzei_lettieri_deviation, r ? std::abs(*r - 1) : 1.0);
+  std::snprintf(text, sizeof text, "max |ratio - 1| = %.1e over the grid (<= 1e-9)", mazzei_lettieri_deviation);
+  check("Mazzei-Lettieri ratio constantly equal to one (Fig. 3.5)", mazzei_lettieri_deviation <= 1e-9, text);
   std::printf(
       "The Ch. 7 figures (+15, +20, +12 %%) are matched by the eps_RZ = 0.35 curves (Ergun %+.1f %%, Kmiec %+.1f %%,\n"
       "Di Felice %+.1f %%), which suggests that the thesis's family reached below 0.40; at eps_RZ = 0.40 the\n"
@@ -248,20 +260,24 @@ int main(int argc, char** argv) {
       100 * largest_overexpansion(di_felice, 0.40, 0.40, 0.1, 1e3).value);
 
   if (directory) {
-    std::vector<std::string> pngs = {
-        plot_figure(*directory, "voidage_ratio_fig3_1_ergun", "Seed 000 Fig. 3.1: Ergun (3.32) against Richardson–Zaki",
-                    "E", ergun, "[0.85:1.5]",
-                    {"set label 'curves end where ε_E reaches 1:' at 2e1,1.47 font ',10'",
-                     "set label 'no homogeneous Ergun bed beyond' at 2e1,1.45 font ',10'"}),
-        plot_figure(*directory, "voidage_ratio_fig3_2_wen_yu",
-                    "Seed 000 Fig. 3.2: Wen & Yu (3.34, α = 2.70) against Richardson–Zaki", "W&Y", wen_yu,
-                    "[0.85:1.25]"),
-        plot_figure(*directory, "voidage_ratio_fig3_3_di_felice",
-                    "Seed 000 Fig. 3.3: Di Felice (3.34 with α_d(Re), 3.48) against Richardson–Zaki", "D", di_felice,
-                    "[0.85:1.25]"),
-        plot_figure(*directory, "voidage_ratio_fig3_5_mazzei_lettieri",
-                    "Seed 000 Fig. 3.5: Mazzei–Lettieri (3.65) against Richardson–Zaki (all curves ≡ 1)", "M&L",
-                    mazzei_lettieri, "[0.85:1.25]"),
+    char identity[120];
+    std::snprintf(identity, sizeof identity,
+                  "set label 'all seven curves lie on 1: max |ratio − 1| = %.0e' at 2e-3, 1.2 font ',11'",
+                  mazzei_lettieri_deviation);
+    const std::vector<std::string> pngs = {
+        plot_ratio(*directory, "voidage_ratio_ergun",
+                   "Bed voidage of the Ergun drag (3.32) over Richardson–Zaki's (3.22, 3.24) at equal u_s", "E", ergun,
+                   {"set label 'curves end where ε_E reaches 1:' at 2e1,1.47 font ',10'",
+                    "set label 'no homogeneous Ergun bed beyond' at 2e1,1.45 font ',10'"}),
+        plot_ratio(*directory, "voidage_ratio_wen_yu",
+                   "Bed voidage of the Wen & Yu drag (3.34, α = 2.70) over Richardson–Zaki's at equal u_s", "W&Y",
+                   wen_yu, schiller_naumann_switch),
+        plot_ratio(*directory, "voidage_ratio_di_felice",
+                   "Bed voidage of Di Felice's α_d(Re) (3.48) in (3.34) over Richardson–Zaki's at equal u_s", "D",
+                   di_felice, schiller_naumann_switch),
+        plot_ratio(*directory, "voidage_ratio_mazzei_lettieri",
+                   "Bed voidage of the Mazzei–Lettieri drag (3.65) over Richardson–Zaki's at equal u_s", "M&L",
+                   mazzei_lettieri, {identity}),
     };
     for (const std::string& png : pngs)
       if (!png.empty()) std::printf("plotted %s\n", png.c_str());
