@@ -17,7 +17,7 @@ Fails (exit 1, listing every problem) when
   4. the docs cite a header or source path (in backticks, e.g. `drag/ergun.hpp`, or as a
      Markdown link target) that does not exist;
   5. a Markdown link `file.md#anchor` (or `#anchor`) names a heading that file does not have
-     (heading anchors as GitHub forms them).
+     (the heading ids GitHub forms).
 
 What counts as a public closure. The headers of the five closure families
 (drag/, settling/, elastic/, kinetic_theory/, moments/ under include/fluidbed/) are read
@@ -234,8 +234,8 @@ def github_heading_slugs(lines):
     return slugs
 
 
-def heading_anchors(path):
-    """The anchors GitHub gives the headings of a Markdown file."""
+def heading_ids(path):
+    """The ids GitHub gives the headings of a Markdown file (the #fragment of a link)."""
     return {slug for _, slug in github_heading_slugs(path.read_text(encoding="utf-8").split("\n"))}
 
 
@@ -277,7 +277,7 @@ def check(root):
                 linked = path if not target else path.parent / target
                 if not linked.exists():
                     problems.append(f"{shown}:{lineno}: link target {target} does not exist")
-                elif anchor and linked.suffix == ".md" and anchor not in heading_anchors(linked):
+                elif anchor and linked.suffix == ".md" and anchor not in heading_ids(linked):
                     problems.append(f"{shown}:{lineno}: no heading #{anchor} in {target or shown}")
 
     catalogued = {q for q in named} | {q.rsplit("::", 1)[0] for q in named if "::" in q}
