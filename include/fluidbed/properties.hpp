@@ -11,9 +11,14 @@
 
 namespace fluidbed {
 
-// Standard gravity [m s⁻²]; every function that needs g takes it as an argument
-// defaulting to this value.
-inline constexpr double standard_gravity = 9.81;
+// Standard gravity [m s⁻²], 9.81 as in seed 000; every function that needs g takes it as an
+// argument defaulting to standard_gravity_as<T>(), 9.81 rounded once to T (a double 9.81
+// would carry only 53 bits into a long double evaluation).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr T standard_gravity_as() {
+  return T(9.81L);
+}
+inline constexpr double standard_gravity = standard_gravity_as<double>();
 
 template <class T>
 struct Fluid {
@@ -43,7 +48,7 @@ FLUIDBED_HOST_DEVICE constexpr T terminal_reynolds(const Fluid<T>& fluid, const 
 // Ar = ρ_f (ρ_p − ρ_f) g d³ / μ_f² (negative for particles lighter than the fluid).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T archimedes(const Fluid<T>& fluid, const Particles<T>& particles,
-                                            const T& gravity = T(standard_gravity)) {
+                                            const T& gravity = standard_gravity_as<T>()) {
   const T d = particles.diameter;
   return fluid.density * (particles.density - fluid.density) * gravity * d * d * d /
          (fluid.viscosity * fluid.viscosity);

@@ -56,14 +56,26 @@ FLUIDBED_HOST_DEVICE constexpr const T& value_of(const Dual<T, N>& x) { return x
 template <class S>
 using value_type_of = std::remove_cvref_t<decltype(value_of(std::declval<const S&>()))>;
 
-// A closure's constant (a switch point of a piecewise law, a bound) rounded once to the plain
-// type of S, for the closure to compare its argument with. Dual's comparisons round a constant
-// to T, while a float compared with a double constant directly is compared in double: at
-// ε = 0.85f, 0.85f > 0.85 but 0.85f <= float(0.85), and the value (S = float) and the
-// derivatives (S = Dual<float, N>) would take different branches. Rounded here, both compare
-// the same two numbers.
+// Constants of the closures. A formula's constant meets its scalar in the scalar's plain
+// type T = value_type_of<S>, never in double: `1 - voidage`, `T(2.4L) * x`, `pow(x, T(0.75L))`.
+// A double literal would turn a float evaluation into a double one (float · double is
+// double) and round a long double evaluation's constants to 53 bits (double(0.175) is
+// 0.175 − 1.1e-17, 819 ulp of x87 long double). Exact integers are written as integers; every
+// other constant as a long double literal converted to T, so that it is the decimal rounded
+// once to T (to 64 bits, then to T: within half an ulp of T but for rare double-rounding
+// ties). A law's run-time parameters (an exponent, a packing limit) are double members and
+// enter as T(parameter): their precision is that of double in every T.
+//
+// A closure's constant that its argument is compared with (a switch point of a piecewise
+// law, a bound), in the plain type of S. Dual's comparisons convert a constant to T, while a
+// float compared with a double constant directly is compared in double: at ε = 0.85f,
+// 0.85f > 0.85 but 0.85f <= float(0.85), and the value (S = float) and the derivatives
+// (S = Dual<float, N>) would take different branches. Given as a long double literal and
+// rounded here once, both compare the same two numbers, and a long double argument is
+// compared with the decimal to 64 bits (0.8L < double(0.8): a double switch point would put
+// ε = 0.8L on the wrong side of a switch at ε = 0.8).
 template <class S>
-FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(double constant) {
+FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(long double constant) {
   return value_type_of<S>(constant);
 }
 
