@@ -30,8 +30,9 @@ namespace detail {
 template <class S>
 FLUIDBED_HOST_DEVICE S van_der_hoef_stokes_force(const S& phi) {
   using std::sqrt;
-  const S eps = 1.0 - phi;
-  return 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * sqrt(phi));
+  using T = value_type_of<S>;
+  const S eps = 1 - phi;
+  return 10 * phi / (eps * eps) + eps * eps * (1 + T(1.5) * sqrt(phi));
 }
 
 }  // namespace detail
@@ -62,7 +63,7 @@ struct VanDerHoef2005 : DragLaw<VanDerHoef2005> {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& /*slip*/, const Fluid<T>& fluid,
                                      const T& diameter) const {
-    return beta_from_drag_force(detail::van_der_hoef_stokes_force(S(1.0 - voidage)), voidage, fluid.viscosity,
+    return beta_from_drag_force(detail::van_der_hoef_stokes_force(S(1 - voidage)), voidage, fluid.viscosity,
                                 diameter);
   }
 };
@@ -104,17 +105,18 @@ struct Beetstra2007 : DragLaw<Beetstra2007> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using std::pow;
-    const S eps = 1.0 - phi;
-    const S re_p = pow(re, S(0.5 + 2.0 * phi));
+    using T = value_type_of<S>;
+    const S eps = 1 - phi;
+    const S re_p = pow(re, S(T(0.5) + 2 * phi));
     const S inertial =
-        (re * (1.0 / eps + 3.0 * eps * phi) + 8.4 * pow(re, 0.657)) * (re_p / (re_p + pow(10.0, 3.0 * phi)));
-    return detail::van_der_hoef_stokes_force(phi) + 0.413 / 24.0 / (eps * eps) * inertial;
+        (re * (1 / eps + 3 * eps * phi) + T(8.4L) * pow(re, T(0.657L))) * (re_p / (re_p + pow(T(10), 3 * phi)));
+    return detail::van_der_hoef_stokes_force(phi) + T(0.413L) / 24 / (eps * eps) * inertial;
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return beta_from_drag_force(dimensionless_force(S(1.0 - voidage), re), voidage, fluid.viscosity, diameter);
+    return beta_from_drag_force(dimensionless_force(S(1 - voidage), re), voidage, fluid.viscosity, diameter);
   }
 };
 
@@ -292,8 +294,8 @@ class BeetstraPolydisperse {
   // model B (classical) ε y + φ y² + c ε y³.
   template <class S>
   FLUIDBED_HOST_DEVICE constexpr PolydisperseBeta<S> correction(const S& voidage, const S& y) const {
-    const S phi = 1.0 - voidage;
-    return {voidage * y * (1.0 + cubic_ * y * y) + phi * y * y, y};
+    const S phi = 1 - voidage;
+    return {voidage * y * (1 + value_type_of<S>(cubic_) * y * y) + phi * y * y, y};
   }
 
   // The generic kernel: β_i in both conventions as functions of ε and w_i, at fixed
@@ -304,7 +306,7 @@ class BeetstraPolydisperse {
                                                        const T& sauter_diameter, const T& share,
                                                        const T& diameter) const {
     const S re = particle_reynolds(fluid, sauter_diameter, voidage, slip);
-    const S force = Beetstra2007::dimensionless_force(S(1.0 - voidage), re);
+    const S force = Beetstra2007::dimensionless_force(S(1 - voidage), re);
     const PolydisperseBeta<S> f = correction(voidage, S(diameter / sauter_diameter));
     return {share * beta_from_drag_force(force * f.classical, voidage, fluid.viscosity, diameter) / voidage,
             share * beta_from_drag_force(force * f.pressure_gradient, voidage, fluid.viscosity, diameter)};

@@ -66,7 +66,7 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
     return detail::single_particle_beta(SchillerNaumannCoefficient::cd_times_re(re), voidage, fluid.viscosity,
                                         diameter) *
-           pow(voidage, -exponent_);
+           pow(voidage, T(-exponent_));
   }
 
  private:

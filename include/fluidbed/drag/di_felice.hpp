@@ -2,9 +2,9 @@
 #pragma once
 
 #include <cmath>
-#include <numbers>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "drag_law.hpp"
 #include "single_particle.hpp"
 
@@ -44,9 +44,10 @@ struct DiFelice : DragLaw<DiFelice<Coefficient>> {
   FLUIDBED_HOST_DEVICE static S exponent(const S& re) {
     using std::exp;
     using std::log;
-    if (!(re > S(0))) return S(3.7);
-    const S x = 1.5 - log(re) / std::numbers::ln10;
-    return 3.7 - 0.65 * exp(-0.5 * x * x);
+    using T = value_type_of<S>;
+    if (!(re > S(0))) return S(T(3.7L));
+    const S x = T(1.5) - log(re) / numbers::ln10<T>();
+    return T(3.7L) - T(0.65L) * exp(T(-0.5) * x * x);
   }
 
   template <class S, class T>
@@ -55,7 +56,7 @@ struct DiFelice : DragLaw<DiFelice<Coefficient>> {
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
     return detail::single_particle_beta(Coefficient::cd_times_re(re), voidage, fluid.viscosity, diameter) *
-           pow(voidage, 2.0 - exponent(re));
+           pow(voidage, 2 - exponent(re));
   }
 };
 

@@ -28,7 +28,7 @@ namespace fluidbed::drag {
 template <class S, class T>
 FLUIDBED_HOST_DEVICE constexpr S beta_from_drag_force(const S& drag_force, const S& voidage, const T& viscosity,
                                                       const T& diameter) {
-  return 18.0 * viscosity / (diameter * diameter) * (voidage * (1.0 - voidage)) * drag_force;
+  return 18 * viscosity / (diameter * diameter) * (voidage * (1 - voidage)) * drag_force;
 }
 
 // β_pressure_gradient = 18 μ_f ε² φ F_tot / d² from the total force F_tot, which includes

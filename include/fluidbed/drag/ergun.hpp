@@ -34,9 +34,9 @@ struct Ergun : DragLaw<Ergun> {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid,
                                                const T& diameter) const {
-    const S phi = 1.0 - voidage;
-    return viscous_constant * fluid.viscosity / (diameter * diameter) * phi * phi / voidage +
-           inertial_constant * fluid.density / diameter * phi * slip;
+    const S phi = 1 - voidage;
+    return T(viscous_constant) * fluid.viscosity / (diameter * diameter) * phi * phi / voidage +
+           T(inertial_constant) * fluid.density / diameter * phi * slip;
   }
 };
 

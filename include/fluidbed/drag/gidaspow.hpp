@@ -2,9 +2,9 @@
 #pragma once
 
 #include <cmath>
-#include <numbers>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "../core/dual.hpp"
 #include "constant_exponent.hpp"
 #include "drag_law.hpp"
@@ -24,7 +24,7 @@ namespace fluidbed::drag {
 // (Wen–Yu at ε = 0.8 exactly). Use GidaspowBlended for a continuous law.
 struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr double switch_voidage = 0.8;
+  static constexpr long double switch_voidage = 0.8L;
 
   constexpr std::string_view name() const { return "GidaspowSwitched"; }
   constexpr std::string_view reference() const {
@@ -56,7 +56,7 @@ struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
 // differs slightly from either law everywhere.
 struct GidaspowBlended : DragLaw<GidaspowBlended> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr double centre_voidage = 0.8;
+  static constexpr long double centre_voidage = 0.8L;
   static constexpr double steepness = 150.0 * 1.75;
 
   constexpr std::string_view name() const { return "GidaspowBlended"; }
@@ -68,13 +68,14 @@ struct GidaspowBlended : DragLaw<GidaspowBlended> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S blending_weight(const S& voidage) {
     using std::atan;
-    return 0.5 + atan(steepness * (voidage - centre_voidage)) / std::numbers::pi;
+    using T = value_type_of<S>;
+    return T(0.5) + atan(T(steepness) * (voidage - constant_as<S>(centre_voidage))) / numbers::pi<T>();
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S psi = blending_weight(voidage);
-    return (1.0 - psi) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
+    return (1 - psi) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
            psi * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
   }
 };

@@ -65,8 +65,8 @@ namespace fluidbed::drag {
 // to O(100)); Benyahia et al. extrapolate to all φ and Re.
 struct KochHill : DragLaw<KochHill> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr double dilute_solids_fraction = 0.01;  // φ ≤ this: dilute branch
-  static constexpr double dense_solids_fraction = 0.4;    // φ ≥ this: Carman form 10φ/ε³
+  static constexpr long double dilute_solids_fraction = 0.01L;  // φ ≤ this: dilute branch
+  static constexpr long double dense_solids_fraction = 0.4L;    // φ ≥ this: Carman form 10φ/ε³
 
   constexpr std::string_view name() const { return "KochHill"; }
   constexpr std::string_view reference() const {
@@ -79,7 +79,8 @@ struct KochHill : DragLaw<KochHill> {
   // F0(φ): zero-Re intercept of the low-Re branch (defined for φ > 0).
   template <class S>
   FLUIDBED_HOST_DEVICE static S f0(const S& phi) {
-    return blended_rational(phi, 17.14, -8.48, 8.16);
+    using T = value_type_of<S>;
+    return blended_rational(phi, T(17.14L), T(-8.48L), T(8.16L));
   }
 
   // F1(φ): coefficient of Re_h² of the low-Re branch (defined for φ > 0).
@@ -87,65 +88,72 @@ struct KochHill : DragLaw<KochHill> {
   FLUIDBED_HOST_DEVICE static S f1(const S& phi) {
     using std::exp;
     using std::sqrt;
-    if (phi <= constant_as<S>(0.1)) return sqrt(2.0 / phi) / 40.0;
-    return 0.11 + 5.1e-4 * exp(11.6 * phi);
+    using T = value_type_of<S>;
+    if (phi <= constant_as<S>(0.1L)) return sqrt(2 / phi) / 40;
+    return T(0.11L) + T(5.1e-4L) * exp(T(11.6L) * phi);
   }
 
   // F2(φ): zero-Re intercept of the high-Re linear branch (defined for φ >= 0).
   template <class S>
   FLUIDBED_HOST_DEVICE static S f2(const S& phi) {
-    return blended_rational(phi, 17.89, -11.03, 15.41);
+    using T = value_type_of<S>;
+    return blended_rational(phi, T(17.89L), T(-11.03L), T(15.41L));
   }
 
   // F3(φ): slope in Re_h of the high-Re linear branch.
   template <class S>
   FLUIDBED_HOST_DEVICE static S f3(const S& phi) {
-    if (phi < constant_as<S>(0.0953)) return 0.9351 * phi + 0.03667;
-    const S eps = 1.0 - phi;
-    return 0.0673 + 0.212 * phi + 0.0232 / ((eps * eps) * (eps * eps) * eps);
+    using T = value_type_of<S>;
+    if (phi < constant_as<S>(0.0953L)) return T(0.9351L) * phi + T(0.03667L);
+    const S eps = 1 - phi;
+    return T(0.0673L) + T(0.212L) * phi + T(0.0232L) / ((eps * eps) * (eps * eps) * eps);
   }
 
   // Re_h where the branches meet: Re_T (φ > 0.01) or Re_T1 (φ ≤ 0.01).
   template <class S>
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
     using std::sqrt;
-    if (phi <= constant_as<S>(dilute_solids_fraction)) return (f2(phi) - 1.0) / (0.375 - f3(phi));
+    using T = value_type_of<S>;
+    if (phi <= constant_as<S>(dilute_solids_fraction)) return (f2(phi) - 1) / (T(0.375) - f3(phi));
     const S a = f1(phi);
     const S b = f3(phi);
-    return (b + sqrt(b * b - 4.0 * a * (f0(phi) - f2(phi)))) / (2.0 * a);
+    return (b + sqrt(b * b - 4 * a * (f0(phi) - f2(phi)))) / (2 * a);
   }
 
   // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside).
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
-    const S re_h = 0.5 * re;
+    using T = value_type_of<S>;
+    const S re_h = T(0.5) * re;
     if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= constant_as<S>(dilute_solids_fraction)) return 1.0 + 0.375 * re_h;
+    if (phi <= constant_as<S>(dilute_solids_fraction)) return 1 + T(0.375) * re_h;
     return f0(phi) + f1(phi) * (re_h * re_h);
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return beta_from_total_force(dimensionless_force(S(1.0 - voidage), re), voidage, fluid.viscosity, diameter);
+    return beta_from_total_force(dimensionless_force(S(1 - voidage), re), voidage, fluid.viscosity, diameter);
   }
 
  private:
   // (1 − w_b) R(a, b, c) + w_b 10φ/ε³ for φ < 0.4, 10φ/ε³ above. At φ = 0 it is 1: the
   // φ ln φ term and w_b take their limits (0), so nothing evaluates 0·∞.
   template <class S>
-  FLUIDBED_HOST_DEVICE static S blended_rational(const S& phi, double a, double b, double c) {
+  FLUIDBED_HOST_DEVICE static S blended_rational(const S& phi, const value_type_of<S>& a, const value_type_of<S>& b,
+                                                 const value_type_of<S>& c) {
     using std::exp;
     using std::log;
     using std::sqrt;
-    const S eps = 1.0 - phi;
-    const S carman = 10.0 * phi / (eps * eps * eps);
+    using T = value_type_of<S>;
+    const S eps = 1 - phi;
+    const S carman = 10 * phi / (eps * eps * eps);
     if (phi >= constant_as<S>(dense_solids_fraction)) return carman;
-    if (!(phi > 0.0)) return S(1.0);
-    const S weight = exp(-10.0 * (dense_solids_fraction - phi) / phi);
-    const S rational = (1.0 + 3.0 * sqrt(0.5 * phi) + 135.0 / 64.0 * phi * log(phi) + a * phi) /
-                       (1.0 + phi * (0.681 + phi * (b + c * phi)));
-    return (1.0 - weight) * rational + weight * carman;
+    if (!(phi > 0)) return S(1);
+    const S weight = exp(-10 * (constant_as<S>(dense_solids_fraction) - phi) / phi);
+    const S rational = (1 + 3 * sqrt(T(0.5) * phi) + T(135) / 64 * phi * log(phi) + a * phi) /
+                       (1 + phi * (T(0.681L) + phi * (b + c * phi)));
+    return (1 - weight) * rational + weight * carman;
   }
 };
 

@@ -56,7 +56,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using T = std::remove_cvref_t<decltype(value_of(re))>;
     using std::pow;
     const T re_value = value_of(re);
-    if (!(re_value > T(0))) return re * pow(voidage, -4.8);  // Re* = Re ε^−4.8 as Re → 0
+    if (!(re_value > T(0))) return re * pow(voidage, T(-4.8L));  // Re* = Re ε^−4.8 as Re → 0
     const T re_star = settling::richardson_zaki_terminal_reynolds(re_value, T(value_of(voidage)));
     if constexpr (std::is_same_v<S, T>) {
       return re_star;
@@ -80,9 +80,10 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   FLUIDBED_HOST_DEVICE static S voidage_function(const S& voidage, const S& re) {
     using std::pow;
     using std::sqrt;
+    using T = value_type_of<S>;
     const S re_star = effective_reynolds(voidage, re);
-    const S ratio = (0.63 * sqrt(re_star) + 4.8) / (0.63 * sqrt(re) + 4.8);
-    return ratio * ratio * pow(voidage, 2.0 - settling::richardson_zaki_exponent_mazzei(re_star));
+    const S ratio = (T(0.63L) * sqrt(re_star) + T(4.8L)) / (T(0.63L) * sqrt(re) + T(4.8L));
+    return ratio * ratio * pow(voidage, 2 - settling::richardson_zaki_exponent_mazzei(re_star));
   }
 
   // ψ_e(ε, Re) = −ln φ_ML/ln ε (eq. 3.64). At ε = 1 the limit n_e (2 − D) − 2 with
@@ -93,8 +94,9 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::log;
     using std::sqrt;
     if (voidage == S(1)) {
-      const S d = 4.8 / (0.63 * sqrt(re) + 4.8);
-      return settling::richardson_zaki_exponent_mazzei(re) * (2.0 - d) - 2.0;
+      using T = value_type_of<S>;
+      const S d = T(4.8L) / (T(0.63L) * sqrt(re) + T(4.8L));
+      return settling::richardson_zaki_exponent_mazzei(re) * (2 - d) - 2;
     }
     return -log(voidage_function(voidage, re)) / log(voidage);
   }
@@ -132,14 +134,14 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::isfinite;
     using std::log;
     using std::log1p;
-    const T prefactor = 0.75 * fluid.viscosity / (diameter * diameter);
+    const T prefactor = T(0.75) * fluid.viscosity / (diameter * diameter);
     const T e = state.inverse_root_power;
-    const T root = (T(0.63) * state.root_reynolds * e + T(4.8)) * e;
+    const T root = (T(0.63L) * state.root_reynolds * e + T(4.8L)) * e;
     const T beta = prefactor * (T(1) - voidage) * voidage * root * root;
     if (isfinite(beta)) return beta;
     const T log_e = T(-0.5) * state.exponent * state.log_voidage;  // (0.63 √Re E² + 4.8 E)² = E⁴ (0.63 √Re + 4.8/E)²
     return exp(log(T(0.75)) + log(fluid.viscosity) - T(2) * log(diameter) + log1p(-voidage) + state.log_voidage +
-               T(4) * log_e + T(2) * log(T(0.63) * state.root_reynolds + T(4.8) / e));
+               T(4) * log_e + T(2) * log(T(0.63L) * state.root_reynolds + T(4.8L) / e));
   }
 
   template <class S, class T>
@@ -147,7 +149,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::exp;
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    const T prefactor = 0.75 * fluid.viscosity / (diameter * diameter);
+    const T prefactor = T(0.75) * fluid.viscosity / (diameter * diameter);
     if constexpr (std::is_same_v<S, T>) {
       if (re > T(0)) {
         return beta_of_state(solve_state(re, voidage), voidage, fluid, diameter);
@@ -156,8 +158,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     const S re_star = effective_reynolds(voidage, re);
     // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
-    const S exponent = value_of(re) > 0 ? settling::richardson_zaki_exponent_mazzei(re_star) : S(4.8);
-    S beta = prefactor * (1.0 - voidage) * DallavalleCoefficient::cd_times_re(re_star) * pow(voidage, 1.0 - exponent);
+    const S exponent = value_of(re) > 0 ? settling::richardson_zaki_exponent_mazzei(re_star) : S(T(4.8L));
+    S beta = prefactor * (1 - voidage) * DallavalleCoefficient::cd_times_re(re_star) * pow(voidage, 1 - exponent);
     if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
       if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
     return beta;

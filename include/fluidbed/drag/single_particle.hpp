@@ -33,8 +33,9 @@ struct SchillerNaumannCoefficient {
   template <class S>
   FLUIDBED_HOST_DEVICE static S cd_times_re(const S& re) {
     using std::pow;
-    if (re < constant_as<S>(newton_switch_reynolds)) return 24.0 * (1.0 + 0.15 * pow(re, 0.687));
-    return 0.44 * re;
+    using T = value_type_of<S>;
+    if (re < constant_as<S>(newton_switch_reynolds)) return 24 * (1 + T(0.15L) * pow(re, T(0.687L)));
+    return T(0.44L) * re;
   }
 };
 
@@ -46,7 +47,8 @@ struct DallavalleCoefficient {
   template <class S>
   FLUIDBED_HOST_DEVICE static S cd_times_re(const S& re) {
     using std::sqrt;
-    const S root = 0.63 * sqrt(re) + 4.8;
+    using T = value_type_of<S>;
+    const S root = T(0.63L) * sqrt(re) + T(4.8L);
     return root * root;
   }
 };
@@ -66,7 +68,7 @@ namespace detail {
 template <class S, class T>
 FLUIDBED_HOST_DEVICE constexpr S single_particle_beta(const S& cd_times_re, const S& voidage, const T& viscosity,
                                                       const T& diameter) {
-  return 0.75 * viscosity / (diameter * diameter) * cd_times_re * (1.0 - voidage) / voidage;
+  return T(0.75) * viscosity / (diameter * diameter) * cd_times_re * (1 - voidage) / voidage;
 }
 
 }  // namespace detail

@@ -48,13 +48,13 @@ namespace fluidbed::drag {
 class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
  public:
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr double switch_voidage = 0.85;
+  static constexpr long double switch_voidage = 0.85L;
 
   constexpr explicit SyamlalOBrien(double c1 = 0.8, double d1 = 2.65) : c1_(c1), d1_(d1) {}
 
   // d1 given, c1 = 0.85^(d1 − 1.28): B continuous at ε = 0.85.
   static SyamlalOBrien continuous_at_switch(double d1) {
-    return SyamlalOBrien(std::pow(switch_voidage, d1 - 1.28), d1);
+    return SyamlalOBrien(std::pow(double(switch_voidage), d1 - 1.28), d1);
   }
 
   // Calibration from a measured minimum fluidization state (superficial velocity u_mf at
@@ -72,7 +72,7 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
   template <class T>
   static SyamlalOBrien from_minimum_fluidization(const T& velocity, const T& voidage, const Fluid<T>& fluid,
                                                  const Particles<T>& particles,
-                                                 const T& gravity = T(standard_gravity)) {
+                                                 const T& gravity = standard_gravity_as<T>()) {
     using std::log;
     using std::pow;
     constexpr std::string_view function = "SyamlalOBrien::from_minimum_fluidization";
@@ -82,14 +82,15 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     const T archimedes_number = archimedes(fluid, particles, gravity);
     const T re_terminal = settling::terminal_reynolds_dallavalle(archimedes_number);
     const T ratio = fluid.density * (velocity / voidage) * particles.diameter / fluid.viscosity / re_terminal;
-    const T b = (ratio * (T(1) + T(0.06) * re_terminal) - pow(voidage, T(4.14))) / (T(0.06) * re_terminal);
+    const T b = (ratio * (1 + T(0.06L) * re_terminal) - pow(voidage, T(4.14L))) / (T(0.06L) * re_terminal);
     if (!(b > T(0)))
       fluidbed::detail::throw_domain_error(function, "minimum_fluidization_velocity", velocity,
                                            "too small for this law: it implies B <= 0");
     const SyamlalOBrien law = [&] {
       if (voidage <= T(switch_voidage)) {
-        const T c1 = b / pow(voidage, T(1.28));
-        return SyamlalOBrien(static_cast<double>(c1), static_cast<double>(T(1.28) + log(c1) / log(T(switch_voidage))));
+        const T c1 = b / pow(voidage, T(1.28L));
+        return SyamlalOBrien(static_cast<double>(c1),
+                             static_cast<double>(T(1.28L) + log(c1) / log(T(switch_voidage))));
       }
       return continuous_at_switch(static_cast<double>(log(b) / log(voidage)));
     }();
@@ -115,20 +116,22 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
   FLUIDBED_HOST_DEVICE S velocity_ratio(const S& voidage, const S& re_s) const {
     using std::pow;
     using std::sqrt;
-    const S a = pow(voidage, 4.14);
-    const S b = voidage <= constant_as<S>(switch_voidage) ? S(c1_ * pow(voidage, 1.28)) : S(pow(voidage, d1_));
-    const S x = 0.06 * re_s;
+    using T = value_type_of<S>;
+    const S a = pow(voidage, T(4.14L));
+    const S b =
+        voidage <= constant_as<S>(switch_voidage) ? S(T(c1_) * pow(voidage, T(1.28L))) : S(pow(voidage, T(d1_)));
+    const S x = T(0.06L) * re_s;
     const S difference = a - x;
-    const S root = sqrt(difference * difference + 4.0 * b * x);
-    if (difference >= 0.0) return 0.5 * (difference + root);
-    return 2.0 * b * x / (root - difference);
+    const S root = sqrt(difference * difference + 4 * b * x);
+    if (difference >= 0) return T(0.5) * (difference + root);
+    return 2 * b * x / (root - difference);
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S re_s = fluid.density * diameter / fluid.viscosity * slip;
     const S ratio = velocity_ratio(voidage, re_s);
-    return 0.75 * fluid.viscosity / (diameter * diameter) * (voidage * (1.0 - voidage)) *
+    return T(0.75) * fluid.viscosity / (diameter * diameter) * (voidage * (1 - voidage)) *
            DallavalleCoefficient::cd_times_re(S(re_s / ratio)) / ratio;
   }
 

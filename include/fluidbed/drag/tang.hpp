@@ -50,19 +50,20 @@ struct Tang2015 : DragLaw<Tang2015> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using std::pow;
-    const S eps = 1.0 - phi;
+    using T = value_type_of<S>;
+    const S eps = 1 - phi;
     const S eps4 = (eps * eps) * (eps * eps);
-    const S linear = 0.11 * phi * (1.0 + phi) - 0.00456 / eps4;
-    const S power = 0.169 * eps + 0.0644 / eps4;
+    const S linear = T(0.11L) * phi * (1 + phi) - T(0.00456L) / eps4;
+    const S power = T(0.169L) * eps + T(0.0644L) / eps4;
     const S stokes = detail::van_der_hoef_stokes_force(phi);
-    if (re <= constant_as<S>(fitted_reynolds_max)) return stokes + linear * re + power * pow(re, 0.657);
-    return stokes + (linear + power * std::pow(fitted_reynolds_max, 0.657 - 1.0)) * re;
+    if (re <= constant_as<S>(fitted_reynolds_max)) return stokes + linear * re + power * pow(re, T(0.657L));
+    return stokes + (linear + power * pow(T(fitted_reynolds_max), T(0.657L) - 1)) * re;
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return beta_from_drag_force(dimensionless_force(S(1.0 - voidage), re), voidage, fluid.viscosity, diameter);
+    return beta_from_drag_force(dimensionless_force(S(1 - voidage), re), voidage, fluid.viscosity, diameter);
   }
 };
 

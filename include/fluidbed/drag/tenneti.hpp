@@ -53,19 +53,20 @@ struct Tenneti2011 : DragLaw<Tenneti2011> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using std::pow;
-    const S eps = 1.0 - phi;
+    using T = value_type_of<S>;
+    const S eps = 1 - phi;
     const S eps3 = eps * eps * eps;
     const S phi3 = phi * phi * phi;
-    const S isolated = 1.0 + 0.15 * pow(re, 0.687);
-    const S volume_fraction = 5.81 * phi / eps3 + 0.48 * pow(phi, 1.0 / 3.0) / (eps3 * eps);
-    const S inertial = phi3 * re * (0.95 + 0.61 * phi3 / (eps * eps));
+    const S isolated = 1 + T(0.15L) * pow(re, T(0.687L));
+    const S volume_fraction = T(5.81L) * phi / eps3 + T(0.48L) * pow(phi, T(1) / 3) / (eps3 * eps);
+    const S inertial = phi3 * re * (T(0.95L) + T(0.61L) * phi3 / (eps * eps));
     return isolated / eps3 + volume_fraction + inertial;
   }
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return beta_from_total_force(dimensionless_force(S(1.0 - voidage), re), voidage, fluid.viscosity, diameter);
+    return beta_from_total_force(dimensionless_force(S(1 - voidage), re), voidage, fluid.viscosity, diameter);
   }
 };
 
