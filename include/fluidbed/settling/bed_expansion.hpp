@@ -116,7 +116,7 @@ template <class T>
 template <class Law, class T>
 requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law, const T& superficial_velocity,
                                                                  const Fluid<T>& fluid, const Particles<T>& particles,
-                                                                 const T& gravity = T(standard_gravity)) {
+                                                                 const T& gravity = standard_gravity_as<T>()) {
   FLUIDBED_EXPECTS(superficial_velocity > T(0) && detail::valid_settling_inputs(fluid, particles, gravity));
   const detail::EquilibriumResidual<Law, T> residual{law, superficial_velocity, fluid, particles.diameter,
                                                      (particles.density - fluid.density) * gravity};
@@ -163,7 +163,7 @@ requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law,
 template <class Law, class T>
 requires DragLawFor<Law, T> T equilibrium_voidage_checked(const Law& law, const T& superficial_velocity,
                                                           const Fluid<T>& fluid, const Particles<T>& particles,
-                                                          const T& gravity = T(standard_gravity)) {
+                                                          const T& gravity = standard_gravity_as<T>()) {
   constexpr std::string_view function = "equilibrium_voidage";
   detail::validate_settling(function, fluid, particles, gravity);
   require_positive(function, "superficial_velocity", superficial_velocity);
@@ -181,7 +181,7 @@ requires DragLawFor<Law, T> T equilibrium_voidage_checked(const Law& law, const 
 template <class T>
 std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_velocity, const Fluid<T>& fluid,
                                                      const Particles<T>& particles,
-                                                     const T& gravity = T(standard_gravity)) {
+                                                     const T& gravity = standard_gravity_as<T>()) {
   FLUIDBED_EXPECTS(superficial_velocity > T(0));
   const T terminal = terminal_velocity_dallavalle(fluid, particles, gravity);
   if (!(superficial_velocity < terminal)) return std::nullopt;
@@ -191,7 +191,8 @@ std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_veloci
 
 template <class T>
 T richardson_zaki_equilibrium_voidage_checked(const T& superficial_velocity, const Fluid<T>& fluid,
-                                              const Particles<T>& particles, const T& gravity = T(standard_gravity)) {
+                                              const Particles<T>& particles,
+                                              const T& gravity = standard_gravity_as<T>()) {
   constexpr std::string_view function = "richardson_zaki_equilibrium_voidage";
   detail::validate_settling(function, fluid, particles, gravity);
   require_positive(function, "superficial_velocity", superficial_velocity);

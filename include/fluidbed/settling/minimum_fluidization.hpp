@@ -65,15 +65,15 @@ template <class T>
 FLUIDBED_HOST_DEVICE T minimum_fluidization_reynolds_wen_yu(const T& archimedes) {
   using std::sqrt;
   FLUIDBED_EXPECTS(!(archimedes < T(0)));
-  const T c = T(33.7);
-  const T k = T(0.0408) * archimedes;
+  const T c = T(33.7L);
+  const T k = T(0.0408L) * archimedes;
   return k / (sqrt(c * c + k) + c);
 }
 
 // u_mf from the Ergun relation above at ε_mf (and sphericity φ_s).
 template <class T>
 T minimum_fluidization_velocity_ergun(const Fluid<T>& fluid, const Particles<T>& particles, const T& voidage,
-                                      const T& sphericity = T(1), const T& gravity = T(standard_gravity)) {
+                                      const T& sphericity = T(1), const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       minimum_fluidization_reynolds_ergun(detail::archimedes_of_settling_system(fluid, particles, gravity), voidage,
                                           sphericity),
@@ -83,7 +83,7 @@ T minimum_fluidization_velocity_ergun(const Fluid<T>& fluid, const Particles<T>&
 // u_mf from Wen & Yu (1966).
 template <class T>
 T minimum_fluidization_velocity_wen_yu(const Fluid<T>& fluid, const Particles<T>& particles,
-                                       const T& gravity = T(standard_gravity)) {
+                                       const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       minimum_fluidization_reynolds_wen_yu(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid,
       particles);
@@ -105,7 +105,7 @@ T minimum_fluidization_reynolds_wen_yu_checked(const T& archimedes) {
 
 template <class T>
 T minimum_fluidization_velocity_ergun_checked(const Fluid<T>& fluid, const Particles<T>& particles, const T& voidage,
-                                              const T& sphericity = T(1), const T& gravity = T(standard_gravity)) {
+                                              const T& sphericity = T(1), const T& gravity = standard_gravity_as<T>()) {
   constexpr std::string_view function = "minimum_fluidization_velocity_ergun";
   detail::validate_settling(function, fluid, particles, gravity);
   detail::validate_ergun_bed(function, voidage, sphericity);
@@ -114,7 +114,7 @@ T minimum_fluidization_velocity_ergun_checked(const Fluid<T>& fluid, const Parti
 
 template <class T>
 T minimum_fluidization_velocity_wen_yu_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                               const T& gravity = T(standard_gravity)) {
+                                               const T& gravity = standard_gravity_as<T>()) {
   detail::validate_settling("minimum_fluidization_velocity_wen_yu", fluid, particles, gravity);
   return minimum_fluidization_velocity_wen_yu(fluid, particles, gravity);
 }

@@ -38,7 +38,23 @@ namespace detail {
 template <class S>
 FLUIDBED_HOST_DEVICE S khan_richardson_wall_factor(const S& wall_ratio) {
   using std::pow;
-  return 1.0 - 2.4 * pow(wall_ratio, 0.27);
+  using T = value_type_of<S>;
+  return 1 - T(2.4L) * pow(wall_ratio, T(0.27L));
+}
+
+// y = 0.175 Re_t^¾, the variable in which eq. 3.24 reads n = 2.4 + 2.4/(1 + y).
+template <class S>
+FLUIDBED_HOST_DEVICE S scaled_power(const S& terminal_reynolds) {
+  using std::pow;
+  using T = value_type_of<S>;
+  return T(0.175L) * pow(terminal_reynolds, T(0.75));
+}
+
+// Eq. 3.24 written in y = 0.175 Re_t^¾.
+template <class S>
+FLUIDBED_HOST_DEVICE S exponent_of_scaled_power(const S& y) {
+  using T = value_type_of<S>;
+  return T(2.4L) + T(2.4L) / (1 + y);
 }
 
 }  // namespace detail
@@ -56,10 +72,8 @@ FLUIDBED_HOST_DEVICE S khan_richardson_wall_factor(const S& wall_ratio) {
 // Precondition: Re_t >= 0. Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
 template <class S>
 FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei(const S& terminal_reynolds) {
-  using std::pow;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  const S x = 0.175 * pow(terminal_reynolds, 0.75);
-  return 2.4 + 2.4 / (1.0 + x);
+  return detail::exponent_of_scaled_power(detail::scaled_power(terminal_reynolds));
 }
 
 // dn/dRe_t of eq. 3.24 = −0.315 Re_t^−¼ / (1 + 0.175 Re_t^¾)² (0.315 = ¾ · 0.175 · 2.4;
@@ -68,9 +82,10 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei(const S& terminal_reynold
 template <class S>
 FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei_derivative(const S& terminal_reynolds) {
   using std::pow;
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  const S one_plus_x = 1.0 + 0.175 * pow(terminal_reynolds, 0.75);
-  return -0.315 * pow(terminal_reynolds, -0.25) / (one_plus_x * one_plus_x);
+  const S one_plus_x = 1 + detail::scaled_power(terminal_reynolds);
+  return T(-0.315L) * pow(terminal_reynolds, T(-0.25)) / (one_plus_x * one_plus_x);
 }
 
 // Richardson, J.F., Zaki, W.N. (1954), "Sedimentation and fluidisation: Part I",
@@ -91,12 +106,13 @@ template <class S>
 FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
                                                      const std::type_identity_t<S>& wall_ratio = S(0)) {
   using std::pow;
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)) && !(wall_ratio < S(0)) && wall_ratio < S(1));
-  if (terminal_reynolds < constant_as<S>(0.2)) return 4.65 + 19.5 * wall_ratio;
-  if (terminal_reynolds < constant_as<S>(1.0)) return (4.35 + 17.5 * wall_ratio) * pow(terminal_reynolds, -0.03);
-  if (terminal_reynolds < constant_as<S>(200.0)) return (4.45 + 18.0 * wall_ratio) * pow(terminal_reynolds, -0.1);
-  if (terminal_reynolds < constant_as<S>(500.0)) return 4.45 * pow(terminal_reynolds, -0.1);
-  return S(2.39);
+  if (terminal_reynolds < constant_as<S>(0.2L)) return T(4.65L) + T(19.5) * wall_ratio;
+  if (terminal_reynolds < 1) return (T(4.35L) + T(17.5) * wall_ratio) * pow(terminal_reynolds, T(-0.03L));
+  if (terminal_reynolds < 200) return (T(4.45L) + 18 * wall_ratio) * pow(terminal_reynolds, T(-0.1L));
+  if (terminal_reynolds < 500) return T(4.45L) * pow(terminal_reynolds, T(-0.1L));
+  return S(T(2.39L));
 }
 
 // Rowe, P.N. (1987), "A convenient empirical equation for estimation of the
@@ -109,9 +125,10 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
 template <class S>
 FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_rowe(const S& terminal_reynolds) {
   using std::pow;
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  const S x = pow(terminal_reynolds, 0.75);
-  return (4.7 + 0.41 * x) / (1.0 + 0.175 * x);
+  const S x = pow(terminal_reynolds, T(0.75));
+  return (T(4.7L) + T(0.41L) * x) / (1 + T(0.175L) * x);
 }
 
 // Khan, A.R., Richardson, J.F. (1989), "Fluid-particle interactions and flow
@@ -130,8 +147,9 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_khan_richardson(const S& archime
                                                                 const std::type_identity_t<S>& wall_ratio = S(0)) {
   using std::pow;
   const S wall_factor = detail::khan_richardson_wall_factor(S(wall_ratio));
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(!(archimedes < S(0)) && !(wall_ratio < S(0)) && wall_factor > S(0));
-  return 2.4 + 2.4 / (1.0 + 0.043 * pow(archimedes, 0.57) * wall_factor);
+  return T(2.4L) + T(2.4L) / (1 + T(0.043L) * pow(archimedes, T(0.57L)) * wall_factor);
 }
 
 // Garside, J., Al-Dibouni, M.R. (1977), "Velocity-voidage relationships for
@@ -144,8 +162,9 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_khan_richardson(const S& archime
 template <class S>
 FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_garside_al_dibouni(const S& terminal_reynolds) {
   using std::pow;
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  return 2.7 + 2.4 / (1.0 + 0.1 * pow(terminal_reynolds, 0.9));
+  return T(2.7L) + T(2.4L) / (1 + T(0.1L) * pow(terminal_reynolds, T(0.9L)));
 }
 
 // ----------------------------------------------------------------------------- the law
@@ -167,7 +186,7 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_voidage(const S& superficial_velocity,
                                                const std::type_identity_t<S>& exponent) {
   using std::pow;
   FLUIDBED_EXPECTS(superficial_velocity > S(0) && superficial_velocity <= terminal_velocity && exponent > S(0));
-  return pow(superficial_velocity / terminal_velocity, 1.0 / exponent);
+  return pow(superficial_velocity / terminal_velocity, 1 / exponent);
 }
 
 namespace detail {
@@ -179,12 +198,6 @@ template <class T>
 struct TerminalReynoldsSolution {
   T log_terminal_reynolds, scaled_power, log_voidage;
 };
-
-// Eq. 3.24 written in y = 0.175 Re_t^¾.
-template <class S>
-FLUIDBED_HOST_DEVICE S exponent_of_scaled_power(const S& y) {
-  return 2.4 + 2.4 / (1.0 + y);
-}
 
 // Halley's method on g(x) = x + n(eˣ) ln ε − ln Re, x = ln Re_t, from the middle of the
 // bracket [ln Re − 2.4 ln ε, ln Re − 4.8 ln ε] (n = 3.6). With y = 0.175 e^(0.75x),
@@ -220,18 +233,18 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T
   const T stop = T(4) * cbrt(std::numeric_limits<T>::epsilon());
   // The bracket, widened by 1 so that a root at one of its ends (n = 4.8 or 2.4 to rounding)
   // lies strictly inside it: a step that lands on an end is then one that cycles.
-  T low = log_re - T(2.4) * log_voidage - T(1);
-  T high = log_re - T(4.8) * log_voidage + T(1);
-  T x = log_re - T(3.6) * log_voidage;
+  T low = log_re - T(2.4L) * log_voidage - 1;
+  T high = log_re - T(4.8L) * log_voidage + 1;
+  T x = log_re - T(3.6L) * log_voidage;
   T previous = high - low;  // the size of the last step taken
   T y{};
   for (int iteration = 0; iteration < 100; ++iteration) {
-    y = T(0.175) * exp(T(0.75) * x);
+    y = T(0.175L) * exp(T(0.75) * x);
     const T r = T(1) / (T(1) + y);
     const T r_q = r * (T(1) - r);  // y r² = y/(1 + y)², from r so that y = ∞ gives 0
-    const T g = x + T(2.4) * log_voidage - log_re + T(2.4) * log_voidage * r;
-    const T d1 = T(1) - T(1.8) * log_voidage * r_q;
-    const T d2 = T(-1.35) * log_voidage * r_q * (T(2) * r - T(1));
+    const T g = x + T(2.4L) * log_voidage - log_re + T(2.4L) * log_voidage * r;
+    const T d1 = T(1) - T(1.8L) * log_voidage * r_q;
+    const T d2 = T(-1.35L) * log_voidage * r_q * (T(2) * r - T(1));
     const T step = T(2) * g * d1 / (T(2) * d1 * d1 - g * d2);
     if (abs(step) <= stop) {
       x -= step;

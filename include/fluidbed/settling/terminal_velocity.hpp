@@ -89,7 +89,7 @@ template <class T>
 FLUIDBED_HOST_DEVICE T terminal_reynolds_newton(const T& archimedes) {
   using std::sqrt;
   FLUIDBED_EXPECTS(!(archimedes < T(0)));
-  return sqrt(archimedes / (T(0.75) * T(0.44)));
+  return sqrt(archimedes / (T(0.75) * T(0.44L)));
 }
 
 // Dallavalle, J.M. (1948), Micromeritics, 2nd ed., Pitman; seed 000 eq. 3.51:
@@ -106,7 +106,7 @@ FLUIDBED_HOST_DEVICE T terminal_reynolds_dallavalle(const T& archimedes) {
   using std::sqrt;
   FLUIDBED_EXPECTS(!(archimedes < T(0)));
   const T s = sqrt(4 * archimedes / 3);
-  const T root = 2 * s / (T(4.8) + sqrt(T(4.8) * T(4.8) + T(2.52) * s));
+  const T root = 2 * s / (T(4.8L) + sqrt(T(4.8L) * T(4.8L) + T(2.52L) * s));
   return root * root;
 }
 
@@ -138,7 +138,7 @@ T terminal_reynolds_schiller_naumann(const T& archimedes) {
 // u_t = (ρ_p − ρ_f) g d² / (18 μ_f) (seed 000 eq. 3.37).
 template <class T>
 T terminal_velocity_stokes(const Fluid<T>& fluid, const Particles<T>& particles,
-                           const T& gravity = T(standard_gravity)) {
+                           const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       terminal_reynolds_stokes(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
@@ -146,7 +146,7 @@ T terminal_velocity_stokes(const Fluid<T>& fluid, const Particles<T>& particles,
 // u_t = √(4 g d (ρ_p − ρ_f) / (3 · 0.44 ρ_f)) (seed 000 eq. 3.41).
 template <class T>
 T terminal_velocity_newton(const Fluid<T>& fluid, const Particles<T>& particles,
-                           const T& gravity = T(standard_gravity)) {
+                           const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       terminal_reynolds_newton(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
@@ -154,7 +154,7 @@ T terminal_velocity_newton(const Fluid<T>& fluid, const Particles<T>& particles,
 // Dallavalle's u_t, the one seed 000 uses with Richardson–Zaki (see terminal_reynolds_dallavalle).
 template <class T>
 T terminal_velocity_dallavalle(const Fluid<T>& fluid, const Particles<T>& particles,
-                               const T& gravity = T(standard_gravity)) {
+                               const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       terminal_reynolds_dallavalle(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid, particles);
 }
@@ -162,7 +162,7 @@ T terminal_velocity_dallavalle(const Fluid<T>& fluid, const Particles<T>& partic
 // Schiller–Naumann's u_t (see terminal_reynolds_schiller_naumann for the jump at Re = 1000).
 template <class T>
 T terminal_velocity_schiller_naumann(const Fluid<T>& fluid, const Particles<T>& particles,
-                                     const T& gravity = T(standard_gravity)) {
+                                     const T& gravity = standard_gravity_as<T>()) {
   return detail::velocity_from_reynolds(
       terminal_reynolds_schiller_naumann(detail::archimedes_of_settling_system(fluid, particles, gravity)), fluid,
       particles);
@@ -196,28 +196,28 @@ T terminal_reynolds_schiller_naumann_checked(const T& archimedes) {
 
 template <class T>
 T terminal_velocity_stokes_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                   const T& gravity = T(standard_gravity)) {
+                                   const T& gravity = standard_gravity_as<T>()) {
   detail::validate_settling("terminal_velocity_stokes", fluid, particles, gravity);
   return terminal_velocity_stokes(fluid, particles, gravity);
 }
 
 template <class T>
 T terminal_velocity_newton_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                   const T& gravity = T(standard_gravity)) {
+                                   const T& gravity = standard_gravity_as<T>()) {
   detail::validate_settling("terminal_velocity_newton", fluid, particles, gravity);
   return terminal_velocity_newton(fluid, particles, gravity);
 }
 
 template <class T>
 T terminal_velocity_dallavalle_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                       const T& gravity = T(standard_gravity)) {
+                                       const T& gravity = standard_gravity_as<T>()) {
   detail::validate_settling("terminal_velocity_dallavalle", fluid, particles, gravity);
   return terminal_velocity_dallavalle(fluid, particles, gravity);
 }
 
 template <class T>
 T terminal_velocity_schiller_naumann_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                             const T& gravity = T(standard_gravity)) {
+                                             const T& gravity = standard_gravity_as<T>()) {
   detail::validate_settling("terminal_velocity_schiller_naumann", fluid, particles, gravity);
   return terminal_velocity_schiller_naumann(fluid, particles, gravity);
 }
