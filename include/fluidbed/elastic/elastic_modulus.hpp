@@ -101,13 +101,14 @@ FLUIDBED_HOST_DEVICE constexpr bool valid_slip_state(const S& voidage, const S& 
 template <class S>
 FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> table_3_1_functions(const S& voidage, const S& log_voidage,
                                                                     const S& scaled_power, const S& root_re_star) {
-  const S one_plus_x = 1.0 + scaled_power;
+  using T = value_type_of<S>;
+  const S one_plus_x = 1 + scaled_power;
   MazzeiLettieriFunctions<S> f;
   f.exponent = settling::detail::exponent_of_scaled_power(scaled_power);
-  f.exponent_slope = -1.8 * scaled_power / (one_plus_x * one_plus_x);  // Re* N, divided by Re* by the caller
-  f.reynolds_factor = 1.0 / (1.0 + f.exponent_slope * log_voidage);
-  f.drag_factor = 4.8 / (0.63 * root_re_star + 4.8);
-  f.voidage_sensitivity = f.reynolds_factor * f.exponent * (f.drag_factor - 2.0) / voidage;
+  f.exponent_slope = T(-1.8L) * scaled_power / (one_plus_x * one_plus_x);  // Re* N, divided by Re* by the caller
+  f.reynolds_factor = 1 / (1 + f.exponent_slope * log_voidage);
+  f.drag_factor = T(4.8L) / (T(0.63L) * root_re_star + T(4.8L));
+  f.voidage_sensitivity = f.reynolds_factor * f.exponent * (f.drag_factor - 2) / voidage;
   return f;
 }
 
@@ -116,12 +117,12 @@ FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> table_3_1_functions(const S& voi
 template <class S>
 FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> mazzei_lettieri_functions(const S& voidage, const S& re_star) {
   using std::log;
-  using std::pow;
   using std::sqrt;
+  using T = value_type_of<S>;
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && !(re_star < 0));
-  MazzeiLettieriFunctions<S> f =
-      detail::table_3_1_functions(voidage, S(log(voidage)), S(0.175 * pow(re_star, 0.75)), S(sqrt(re_star)));
-  f.exponent_slope = value_of(re_star) > 0 ? f.exponent_slope / re_star : S(-std::numeric_limits<double>::infinity());
+  MazzeiLettieriFunctions<S> f = detail::table_3_1_functions(
+      voidage, S(log(voidage)), settling::detail::scaled_power(re_star), S(sqrt(re_star)));
+  f.exponent_slope = value_of(re_star) > 0 ? f.exponent_slope / re_star : S(-std::numeric_limits<T>::infinity());
   return f;
 }
 
@@ -131,7 +132,7 @@ FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> mazzei_lettieri_functions(const 
 template <class S>
 FLUIDBED_HOST_DEVICE S constant_exponent_sensitivity(const S& voidage) {
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1);
-  return -4.8 / voidage;
+  return value_type_of<S>(-4.8L) / voidage;
 }
 
 // H of a model at (ε, Re*); Re* is ignored by Foscolo–Gibilaro and Jean–Fan. Preconditions:
@@ -153,7 +154,7 @@ FLUIDBED_HOST_DEVICE S modulus_from_sensitivity(const S& voidage, const S& sensi
                                                 const Particles<T>& particles, const T& gravity) {
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && settling::detail::valid_settling_inputs(fluid, particles, gravity));
   const T weight = T(2) / T(3) * particles.diameter * (particles.density - fluid.density) * gravity;
-  return -weight * (1.0 - voidage) * sensitivity;
+  return -weight * (1 - voidage) * sensitivity;
 }
 
 // Foscolo–Gibilaro, eq. 3.75: E_f = 3.2 d (1 − ε)(ρ_p − ρ_f) g [Pa]. Native buoyancy:
@@ -161,15 +162,15 @@ FLUIDBED_HOST_DEVICE S modulus_from_sensitivity(const S& voidage, const S& sensi
 // for 1-D fluidization, every ε in (0, 1) and Re_t; 0 at ε = 1.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S foscolo_gibilaro_modulus(const S& voidage, const Fluid<T>& fluid, const Particles<T>& particles,
-                                                const T& gravity = T(standard_gravity)) {
-  return modulus_from_sensitivity(voidage, S(-4.8), fluid, particles, gravity);
+                                                const T& gravity = standard_gravity_as<T>()) {
+  return modulus_from_sensitivity(voidage, S(T(-4.8L)), fluid, particles, gravity);
 }
 
 // Jean–Fan, eq. 3.95: E_j = E_f/ε = 3.2 d (1 − ε)(ρ_p − ρ_f) g/ε [Pa]. Native buoyancy:
 // classical. Same range as Foscolo–Gibilaro.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S jean_fan_modulus(const S& voidage, const Fluid<T>& fluid, const Particles<T>& particles,
-                                        const T& gravity = T(standard_gravity)) {
+                                        const T& gravity = standard_gravity_as<T>()) {
   return modulus_from_sensitivity(voidage, constant_exponent_sensitivity(voidage), fluid, particles, gravity);
 }
 
@@ -179,7 +180,7 @@ FLUIDBED_HOST_DEVICE S jean_fan_modulus(const S& voidage, const Fluid<T>& fluid,
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S mazzei_lettieri_equilibrium_modulus(const S& voidage, const Fluid<T>& fluid,
                                                            const Particles<T>& particles, const T& terminal_reynolds,
-                                                           const T& gravity = T(standard_gravity)) {
+                                                           const T& gravity = standard_gravity_as<T>()) {
   const S h = mazzei_lettieri_functions(voidage, S(terminal_reynolds)).voidage_sensitivity;
   return modulus_from_sensitivity(voidage, h, fluid, particles, gravity);
 }
@@ -188,7 +189,7 @@ FLUIDBED_HOST_DEVICE S mazzei_lettieri_equilibrium_modulus(const S& voidage, con
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const S& voidage, const Fluid<T>& fluid,
                                            const Particles<T>& particles, const T& terminal_reynolds,
-                                           const T& gravity = T(standard_gravity)) {
+                                           const T& gravity = standard_gravity_as<T>()) {
   switch (model) {
     case ElasticModel::foscolo_gibilaro: return foscolo_gibilaro_modulus(voidage, fluid, particles, gravity);
     case ElasticModel::jean_fan: return jean_fan_modulus(voidage, fluid, particles, gravity);
@@ -312,7 +313,7 @@ void validate_table_3_1_state(std::string_view function, const T& voidage, const
 template <class T>
 T equilibrium_modulus_checked(ElasticModel model, const T& voidage, const Fluid<T>& fluid,
                               const Particles<T>& particles, const T& terminal_reynolds,
-                              const T& gravity = T(standard_gravity)) {
+                              const T& gravity = standard_gravity_as<T>()) {
   detail::validate_modulus_inputs("equilibrium_modulus", voidage, fluid, particles, gravity);
   require_non_negative("equilibrium_modulus", "terminal_reynolds", terminal_reynolds);
   return equilibrium_modulus(model, voidage, fluid, particles, terminal_reynolds, gravity);

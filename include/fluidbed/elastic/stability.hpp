@@ -44,13 +44,14 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
-#include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 
 #include "../core/config.hpp"
+#include "../core/dual.hpp"
 #include "../core/errors.hpp"
 #include "../properties.hpp"
 #include "../settling/richardson_zaki.hpp"
@@ -64,7 +65,7 @@ template <class T>
 struct HomogeneousSuspension {
   Fluid<T> fluid;
   Particles<T> particles;
-  T gravity = T(standard_gravity);
+  T gravity = standard_gravity_as<T>();
   T terminal_velocity;  // u_t [m s⁻¹], Dallavalle
   T terminal_reynolds;  // Re_t = ρ_f u_t d/μ_f
   T exponent;           // n_e(Re_t), seed eq. 3.24
@@ -74,7 +75,7 @@ struct HomogeneousSuspension {
 // eq. 3.24. Preconditions: positive properties, ρ_p > ρ_f (a fluidized, not a floating, bed).
 template <class T>
 HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Particles<T>& particles,
-                                                const T& gravity = T(standard_gravity)) {
+                                                const T& gravity = standard_gravity_as<T>()) {
   HomogeneousSuspension<T> s{fluid, particles, gravity, T(0), T(0), T(0)};
   s.terminal_velocity = settling::terminal_velocity_dallavalle(fluid, particles, gravity);
   s.terminal_reynolds = terminal_reynolds(fluid, particles.diameter, s.terminal_velocity);
@@ -85,7 +86,7 @@ HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Par
 // The same with every argument validated (std::domain_error naming argument and value).
 template <class T>
 HomogeneousSuspension<T> homogeneous_suspension_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                                        const T& gravity = T(standard_gravity)) {
+                                                        const T& gravity = standard_gravity_as<T>()) {
   settling::detail::validate_settling("homogeneous_suspension", fluid, particles, gravity);  // also ρ_p > ρ_f
   return homogeneous_suspension(fluid, particles, gravity);
 }
@@ -121,7 +122,7 @@ template <class S, class T>
 FLUIDBED_HOST_DEVICE S kinematic_wave_speed(const HomogeneousSuspension<T>& s, const S& voidage) {
   using std::pow;
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.exponent > T(0));
-  return s.terminal_velocity * s.exponent * (1.0 - voidage) * pow(voidage, s.exponent - T(1));
+  return s.terminal_velocity * s.exponent * (1 - voidage) * pow(voidage, s.exponent - T(1));
 }
 
 // u_d = √(E^e/ρ_p) (eq. 4.31) [m s⁻¹].
@@ -139,7 +140,7 @@ FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voida
   FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.particles.density > T(0));
   const auto f = mazzei_lettieri_functions(voidage, S(s.terminal_reynolds));
   const S superficial = s.terminal_velocity * pow(voidage, s.exponent);
-  return (s.particles.density - s.fluid.density) * s.gravity * f.reynolds_factor * (2.0 - f.drag_factor) /
+  return (s.particles.density - s.fluid.density) * s.gravity * f.reynolds_factor * (2 - f.drag_factor) /
          (s.particles.density * superficial);
 }
 
@@ -148,7 +149,7 @@ FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voida
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S stability_function(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
   if (voidage == 1) return S(-std::numeric_limits<T>::infinity());
-  return 1.0 - dynamic_wave_speed(model, s, voidage) / kinematic_wave_speed(s, voidage);
+  return 1 - dynamic_wave_speed(model, s, voidage) / kinematic_wave_speed(s, voidage);
 }
 
 template <class T>
@@ -250,10 +251,11 @@ T squared_wavenumber_of_wave_velocity_checked(const WaveSpeeds<T>& w, const T& v
 
 // Where the stability function is searched: lower <= ε <= upper. The default lower bound is
 // below any packed bed (Foscolo–Gibilaro puts the transition of the coarser FCC powders of
-// Table 4.6 near ε = 0.36); upper = 1 searches up to 1 − 1e-15.
+// Table 4.6 near ε = 0.36); upper = 1 searches up to the largest voidage below 1 that the
+// search resolves in T (detail::largest_searched_voidage).
 template <class T>
 struct VoidageInterval {
-  T lower = T(0.30);
+  T lower = T(0.3L);
   T upper = T(1);
 };
 
@@ -275,8 +277,8 @@ struct StabilityTransition {
 
 namespace detail {
 
-// S on the variable u = −ln(1 − ε), which spreads the whole range, down to 1 − ε = 1e-15
-// where the re-stabilisation root of coarse particles lies, over a uniform grid.
+// S is sampled on the variable u = −ln(1 − ε), which spreads the whole range, up to the
+// re-stabilisation root close to 1, over a uniform grid.
 template <class T>
 T voidage_of_log_gap(const T& u) {
   using std::expm1;
@@ -289,23 +291,59 @@ T log_gap_of_voidage(const T& voidage) {
   return -log1p(-voidage);
 }
 
+// The largest voidage the search reaches, 1 − 4ε_T (ε_T = std::numeric_limits<T>::epsilon()):
+// 1 − 8.9e-16 in double, 1 − 4.8e-7 in float, 1 − 4.3e-19 in x87 long double. S is finite
+// there (ε = 1 itself is its −∞ limit), and a re-stabilisation root closer to 1 than that is
+// not resolved in T. A fixed 1 − 1e-15 would be 1 in float: S = −∞ and the samples NaN.
+template <class T>
+T largest_searched_voidage() {
+  return T(1) - T(4) * std::numeric_limits<T>::epsilon();
+}
+
+// A bound on the iterations of every TOMS 748 solve of the search: each converges to
+// eps_tolerance<T> in about ten.
+inline constexpr std::uintmax_t root_iteration_limit = 200;
+
+// The root of f in [a, b], f(a) and f(b) of opposite signs, by TOMS 748 to the precision of T.
+template <class T, class F>
+T bracketed_root(const F& f, const T& a, const T& b, const T& f_a, const T& f_b) {
+  std::uintmax_t iterations = root_iteration_limit;
+  const auto bracket =
+      boost::math::tools::toms748_solve(f, a, b, f_a, f_b, boost::math::tools::eps_tolerance<T>(), iterations);
+  return (bracket.first + bracket.second) / T(2);
+}
+
+// dS/dε, exact (one dual-number evaluation of S).
+template <class T>
+T stability_slope(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+  return stability_function(model, s, Dual<T, 1>::variable(voidage, 0)).derivative[0];
+}
+
 }  // namespace detail
 
 // The minimum bubbling point of a model: the lowest root of S in the interval, the
 // superficial velocity there, the re-stabilisation root, and the maximum of S. S is sampled
-// on 2000 points uniform in −ln(1 − ε); its maximum is refined by Brent's method and every
-// root bracketed by the samples (or by the maximum, so that a positive band narrower than the
-// sampling is still found) is refined by TOMS 748 to full precision. Throws std::domain_error
-// unless 0 < lower < upper <= 1 and the suspension is valid (detail::validate_suspension).
+// on 2000 points uniform in −ln(1 − ε). Its maximum is located as the root of the exact
+// dS/dε (dual numbers) between the neighbours of the largest sample, by TOMS 748 to the
+// precision of T; a value-only search (Brent) could not place it better than √ε_T relative,
+// since S is flat to second order there. Every root of S bracketed by the samples (or by the
+// maximum, so that a positive band narrower than the sampling is still found) is refined by
+// TOMS 748 to the precision of T. Every iteration is bounded (detail::root_iteration_limit).
+// Works in float, double and long double, up to detail::largest_searched_voidage<T>().
+// Throws std::domain_error unless 0 < lower < upper <= 1 and the suspension is valid
+// (detail::validate_suspension), and if S is not finite at a sample (a suspension whose
+// wave speeds leave the range of T).
 template <class T>
 StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const HomogeneousSuspension<T>& s,
                                               const VoidageInterval<T>& interval = {}) {
   using std::pow;
-  detail::validate_suspension("minimum_bubbling_point", s);
-  require_in_open("minimum_bubbling_point", "interval.lower", interval.lower, T(0), T(1));
-  require_in_half_open("minimum_bubbling_point", "interval.upper", interval.upper, interval.lower, T(1));
-  const T stability_limit = std::min(interval.upper, T(1) - T(1e-15));
+  constexpr std::string_view function = "minimum_bubbling_point";
+  detail::validate_suspension(function, s);
+  require_in_open(function, "interval.lower", interval.lower, T(0), T(1));
+  require_in_half_open(function, "interval.upper", interval.upper, interval.lower, T(1));
+  const T stability_limit = std::min(interval.upper, detail::largest_searched_voidage<T>());
   const auto stability = [&](const T& voidage) { return stability_function(model, s, voidage); };
+  const auto slope = [&](const T& voidage) { return detail::stability_slope(model, s, voidage); };
   constexpr int samples = 2000;
   const T u_low = detail::log_gap_of_voidage(interval.lower), u_high = detail::log_gap_of_voidage(stability_limit);
   std::vector<T> voidage(samples), value(samples);
@@ -313,21 +351,27 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
     voidage[i] = i + 1 == samples ? stability_limit
                                   : detail::voidage_of_log_gap(u_low + (u_high - u_low) * T(i) / T(samples - 1));
     value[i] = stability(voidage[i]);
+    require_finite_result(function, "stability function", value[i], [&] {
+      std::ostringstream text;
+      text.precision(17);
+      text << "the suspension at voidage " << voidage[i];
+      return text.str();
+    });
   }
   const int peak = int(std::max_element(value.begin(), value.end()) - value.begin());
   StabilityTransition<T> out;
-  {
-    const T left = voidage[std::max(peak - 1, 0)], right = voidage[std::min(peak + 1, samples - 1)];
-    const auto [where, minus_value] = boost::math::tools::brent_find_minima(
-        [&](const T& e) { return -stability(e); }, left, right, std::numeric_limits<T>::digits / 2);
-    out.maximum_voidage = -minus_value > value[peak] ? where : voidage[peak];
-    out.maximum_stability = std::max(-minus_value, value[peak]);
+  out.maximum_voidage = voidage[peak];  // the maximum at an end of the interval
+  out.maximum_stability = value[peak];
+  if (peak > 0 && peak + 1 < samples) {
+    const T left = voidage[peak - 1], right = voidage[peak + 1];
+    const T slope_left = slope(left), slope_right = slope(right);
+    if (slope_left > T(0) && slope_right < T(0)) {
+      out.maximum_voidage = detail::bracketed_root(slope, left, right, slope_left, slope_right);
+      out.maximum_stability = stability(out.maximum_voidage);
+    }
   }
-  const auto root = [&](T a, T b) {
-    std::uintmax_t iterations = 200;
-    const auto bracket = boost::math::tools::toms748_solve(stability, a, b, boost::math::tools::eps_tolerance<T>(),
-                                                           iterations);
-    return (bracket.first + bracket.second) / T(2);
+  const auto root = [&](const T& a, const T& b) {
+    return detail::bracketed_root(stability, a, b, stability(a), stability(b));
   };
   // Brackets: between samples of opposite sign, or, when no sample is positive (a band
   // narrower than the sampling), between the maximum and its neighbouring samples.
@@ -340,7 +384,8 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
     out.status = TransitionStatus::transition;
     int i = 0;
     while (positive_sample && value[i + 1] < T(0)) ++i;  // stops at the first sign change, at the latest at the peak
-    out.bubbling_voidage = positive_sample ? root(voidage[i], voidage[i + 1]) : root(voidage[below_peak], out.maximum_voidage);
+    out.bubbling_voidage =
+        positive_sample ? root(voidage[i], voidage[i + 1]) : root(voidage[below_peak], out.maximum_voidage);
     out.bubbling_velocity = s.terminal_velocity * pow(*out.bubbling_voidage, s.exponent);
   }
   if (out.maximum_stability > T(0) && value[samples - 1] < T(0)) {
