@@ -40,16 +40,16 @@ FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const Pressure& pressure, 
                                                       const S& beta) {
   using std::sqrt;
   FLUIDBED_EXPECTS(value_of(rate.deviatoric_contraction) >= 0 && value_of(beta) >= 0);
-  const S unit(1.0);
-  const S b = pressure(phi, unit, g0, m) * rate.divergence + 3.0 * beta;
-  const S c = 2.0 * shear_viscosity(phi, unit, g0, m) * rate.deviatoric_contraction +
+  const S unit(1);
+  const S b = pressure(phi, unit, g0, m) * rate.divergence + 3 * beta;
+  const S c = 2 * shear_viscosity(phi, unit, g0, m) * rate.deviatoric_contraction +
               bulk_viscosity(phi, unit, g0, m) * rate.divergence * rate.divergence;
   const S B = dissipation(phi, unit, g0, m);
   S x;
   if (b >= 0)
-    x = c == 0 ? S(0) : 2.0 * c / (b + sqrt(b * b + 4.0 * B * c));
+    x = c == 0 ? S(0) : 2 * c / (b + sqrt(b * b + 4 * B * c));
   else
-    x = (sqrt(b * b + 4.0 * B * c) - b) / (2.0 * B);
+    x = (sqrt(b * b + 4 * B * c) - b) / (2 * B);
   return x * x;
 }
 

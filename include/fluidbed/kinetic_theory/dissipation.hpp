@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "granular_state.hpp"
 
 namespace fluidbed::kinetic_theory {
@@ -29,7 +30,7 @@ struct LunDissipation {
     using std::sqrt;
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
     const T e = m.restitution;
-    return (12.0 * (1.0 - e * e) * m.density / (m.diameter * detail::sqrt_pi)) * (g0 * phi * phi) *
+    return (12 * (1 - e * e) * m.density / (m.diameter * numbers::sqrt_pi<T>())) * (g0 * phi * phi) *
            (theta * sqrt(theta));
   }
 };

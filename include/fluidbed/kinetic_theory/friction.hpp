@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "granular_state.hpp"
 
 namespace fluidbed::kinetic_theory {
@@ -76,10 +77,13 @@ struct JohnsonJacksonPressure {
     using std::pow;
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin) &&
                      min_fraction >= 0 && min_fraction < max_packing);
-    if (!(phi > min_fraction)) return S(0);
-    const S gap_factor = detail::continued_linearly_above(
-        phi, max_packing - packing_margin, [&](const auto& x) { return pow(max_packing - x, -denominator_exponent); });
-    return coefficient * pow(phi - min_fraction, numerator_exponent) * gap_factor;
+    using T = value_type_of<S>;
+    const T onset = T(min_fraction), packing = T(max_packing);
+    if (!(phi > onset)) return S(0);
+    const S gap_factor = detail::continued_linearly_above(phi, packing - T(packing_margin), [&](const auto& x) {
+      return pow(packing - x, T(-denominator_exponent));
+    });
+    return T(coefficient) * pow(phi - onset, T(numerator_exponent)) * gap_factor;
   }
 };
 
@@ -103,8 +107,10 @@ struct SchaefferPressure {
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && min_fraction >= 0 && min_fraction < 1);
-    if (!(phi > min_fraction)) return S(0);
-    return coefficient * pow(phi - min_fraction, exponent);
+    using T = value_type_of<S>;
+    const T onset = T(min_fraction);
+    if (!(phi > onset)) return S(0);
+    return T(coefficient) * pow(phi - onset, T(exponent));
   }
 };
 
@@ -130,8 +136,10 @@ struct SchaefferViscosity {
     using std::sqrt;
     FLUIDBED_EXPECTS(value_of(frictional_pressure) >= 0 && value_of(rate.deviatoric_contraction) >= 0 &&
                      detail::valid_yield_parameters(friction_angle, strain_rate_floor));
-    const S invariant = 0.5 * rate.deviatoric_contraction + strain_rate_floor * strain_rate_floor;
-    return (0.5 * sin(friction_angle)) * frictional_pressure / sqrt(invariant);
+    using T = value_type_of<S>;
+    const T floor = T(strain_rate_floor);
+    const S invariant = T(0.5) * rate.deviatoric_contraction + floor * floor;
+    return (T(0.5) * sin(T(friction_angle))) * frictional_pressure / sqrt(invariant);
   }
 };
 
@@ -172,16 +180,14 @@ struct SrivastavaSundaresan {
     FLUIDBED_EXPECTS(value_of(theta) >= 0 && diameter > T(0) && value_of(rate.deviatoric_contraction) >= 0 &&
                      detail::valid_yield_parameters(friction_angle, strain_rate_floor));
     const S critical = critical_state_pressure(phi);
-    const T sin_angle = sin(friction_angle);
-    const S zeta =
-        sqrt(rate.deviatoric_contraction + theta / (diameter * diameter) + strain_rate_floor * strain_rate_floor);
-    const T n = rate.divergence >= 0 ? std::numbers::sqrt3 / (2.0 * sin_angle) : 1.03;
+    const T sin_angle = sin(T(friction_angle)), floor = T(strain_rate_floor), sqrt2 = numbers::sqrt2<T>();
+    const S zeta = sqrt(rate.deviatoric_contraction + theta / (diameter * diameter) + floor * floor);
+    const T n = rate.divergence >= 0 ? numbers::sqrt3<T>() / (2 * sin_angle) : T(1.03L);
     // u = 1 − r: written in u, ∂μ_f/∂(∇·u) is exactly 0 at ∇·u = 0, as it is analytically.
-    const S u = rate.divergence / ((n * std::numbers::sqrt2 * sin_angle) * zeta);
+    const S u = rate.divergence / ((n * sqrt2 * sin_angle) * zeta);
     if (u >= 1) return {S(0), S(0)};
-    const S pressure = critical * pow(1.0 - u, n - 1.0);
-    const S viscosity =
-        detail::non_negative_part((std::numbers::sqrt2 * sin_angle / 2.0) * (pressure * (1.0 + (n - 1.0) * u)) / zeta);
+    const S pressure = critical * pow(1 - u, n - 1);
+    const S viscosity = detail::non_negative_part((sqrt2 * sin_angle / 2) * (pressure * (1 + (n - 1) * u)) / zeta);
     return {pressure, viscosity};
   }
 };

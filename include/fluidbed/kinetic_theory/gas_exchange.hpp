@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "granular_state.hpp"
 
 namespace fluidbed::kinetic_theory {
@@ -25,7 +26,7 @@ namespace fluidbed::kinetic_theory {
 template <class S>
 FLUIDBED_HOST_DEVICE constexpr S gas_damping(const S& beta, const S& granular_temperature) {
   FLUIDBED_EXPECTS(value_of(beta) >= 0 && value_of(granular_temperature) >= 0);
-  return -3.0 * beta * granular_temperature;
+  return -3 * beta * granular_temperature;
 }
 
 template <class T>
@@ -46,7 +47,8 @@ namespace detail {
 template <class S>
 FLUIDBED_HOST_DEVICE S regularised_inverse_sqrt(const S& theta, double floor) {
   using std::sqrt;
-  return 1.0 / (sqrt(theta) + std::sqrt(floor));
+  using T = value_type_of<S>;
+  return 1 / (sqrt(theta) + sqrt(T(floor)));
 }
 
 // Θ_floor > 0: with 0 both sources are infinite at Θ = 0.
@@ -74,8 +76,8 @@ struct KochSanganiSource {
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m) && value_of(slip) >= 0 &&
                      gas_viscosity > T(0) && temperature_floor > 0);
     const T d = m.diameter;
-    return (81.0 * gas_viscosity * gas_viscosity / (d * d * d * m.density * detail::sqrt_pi)) * phi * slip * slip / g0 *
-           detail::regularised_inverse_sqrt(theta, temperature_floor);
+    return (81 * gas_viscosity * gas_viscosity / (d * d * d * m.density * numbers::sqrt_pi<T>())) * phi * slip * slip /
+           g0 * detail::regularised_inverse_sqrt(theta, temperature_floor);
   }
 };
 
@@ -94,7 +96,7 @@ struct DragFluctuationSource {
                                     const GranularMaterial<T>& m) const {
     FLUIDBED_EXPECTS(value_of(phi) > 0 && value_of(phi) < 1 && value_of(theta) >= 0 && value_of(beta) >= 0 &&
                      value_of(slip) >= 0 && detail::valid_material(m) && temperature_floor > 0);
-    return (m.diameter / (4.0 * m.density * detail::sqrt_pi)) * beta * beta * slip * slip / phi *
+    return (m.diameter / (4 * m.density * numbers::sqrt_pi<T>())) * beta * beta * slip * slip / phi *
            detail::regularised_inverse_sqrt(theta, temperature_floor);
   }
 };

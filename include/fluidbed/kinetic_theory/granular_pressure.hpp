@@ -20,7 +20,7 @@ namespace detail {
 template <class S, class T>
 FLUIDBED_HOST_DEVICE constexpr S collisional_pressure(const S& phi, const S& theta, const S& g0,
                                                       const GranularMaterial<T>& m) {
-  return (2.0 * m.density * (1.0 + m.restitution)) * (phi * phi * g0 * theta);
+  return (2 * m.density * (1 + m.restitution)) * (phi * phi * g0 * theta);
 }
 
 }  // namespace detail
@@ -78,8 +78,8 @@ struct AhmadiMaPressure {
                                               const GranularMaterial<T>& m) const {
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m) && friction_coefficient >= 0);
     const T e = m.restitution;
-    const T inelastic = 1.0 + 0.5 * (1.0 + e) * (1.0 - e + 2.0 * friction_coefficient);
-    return m.density * (phi * theta) * (inelastic + 4.0 * phi * g0);
+    const T inelastic = 1 + T(0.5) * (1 + e) * (1 - e + 2 * T(friction_coefficient));
+    return m.density * (phi * theta) * (inelastic + 4 * phi * g0);
   }
 };
 

@@ -71,9 +71,9 @@ struct Lebowitz {
   FLUIDBED_HOST_DEVICE constexpr S operator()(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                               std::size_t k) const {
     const auto sums = detail::mixture_sums(fractions, diameters, i, k);
-    const S inverse_gap = 1.0 / (1.0 - sums.total_fraction);
+    const S inverse_gap = 1 / (1 - sums.total_fraction);
     const T d_i = diameters[i], d_k = diameters[k];
-    return inverse_gap + 3.0 * (d_i * d_k / (d_i + d_k)) * sums.fraction_over_diameter * inverse_gap * inverse_gap;
+    return inverse_gap + 3 * (d_i * d_k / (d_i + d_k)) * sums.fraction_over_diameter * inverse_gap * inverse_gap;
   }
 };
 
@@ -90,7 +90,7 @@ struct Mansoori {
   FLUIDBED_HOST_DEVICE constexpr S operator()(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                               std::size_t k) const {
     const auto sums = detail::mixture_sums(fractions, diameters, i, k);
-    const S inverse_gap = 1.0 / (1.0 - sums.total_fraction);
+    const S inverse_gap = 1 / (1 - sums.total_fraction);
     const detail::MansooriFactors<S> f{inverse_gap, inverse_gap * inverse_gap, inverse_gap * inverse_gap * inverse_gap};
     return detail::mansoori_sum(f, detail::reduced_xi(sums.fraction_over_diameter, diameters[i], diameters[k]));
   }

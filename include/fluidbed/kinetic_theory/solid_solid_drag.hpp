@@ -7,10 +7,10 @@
 // validates them and throws std::domain_error naming the argument and its value.
 #pragma once
 
-#include <numbers>
 #include <string>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "../properties.hpp"
 #include "granular_state.hpp"
 
@@ -39,7 +39,7 @@ struct SyamlalSolidSolidDrag {
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi_p, const S& phi_q, const Particles<T>& p,
                                               const Particles<T>& q, const T& restitution, const S& contact_rdf,
                                               const S& relative_speed) const {
-    constexpr double pi = std::numbers::pi;
+    const T pi = numbers::pi<T>();
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi_p) && detail::valid_solid_fraction(phi_q));
     FLUIDBED_EXPECTS(p.density > T(0) && p.diameter > T(0) && q.density > T(0) && q.diameter > T(0));
     FLUIDBED_EXPECTS(restitution >= T(0) && restitution <= T(1) && friction_coefficient >= 0);
@@ -47,8 +47,8 @@ struct SyamlalSolidSolidDrag {
     const T d_sum = p.diameter + q.diameter;
     const T mass_scale =
         p.density * p.diameter * p.diameter * p.diameter + q.density * q.diameter * q.diameter * q.diameter;
-    const T prefactor = 3.0 * (1.0 + restitution) * (pi / 2.0 + friction_coefficient * pi * pi / 8.0) * p.density *
-                        q.density * d_sum * d_sum / (2.0 * pi * mass_scale);
+    const T prefactor = 3 * (1 + restitution) * (pi / 2 + T(friction_coefficient) * pi * pi / 8) * p.density *
+                        q.density * d_sum * d_sum / (2 * pi * mass_scale);
     return prefactor * (phi_p * phi_q) * contact_rdf * relative_speed;
   }
 };
