@@ -1,0 +1,148 @@
+// The settling family in float, double and long double against the mpmath table of
+// scalar_types_reference.py (inputs exact in the three types, 25-digit values): the
+// Richardson–Zaki exponents and law, the terminal Reynolds numbers and velocities, minimum
+// fluidization, and the equilibrium voidage, voidage ratio and equivalent exponent of every
+// law of all_drag_laws (a law added to the run-time family is tested here too). Every
+// quantity of the table has a function here and every function rows in the table.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/settling.hpp"
+#include "test_scalar_types.hpp"
+
+using namespace fluidbed;
+using namespace fluidbed::settling;
+
+namespace {
+
+// Closed forms are a few roundings of their exact inputs; the solvers (Halley for Re_t,
+// TOMS 748 for the equilibrium voidage and Schiller–Naumann's Re_t) stop at the precision of
+// T and their roots move by the residual's rounding over its slope; the voidage ratio chains
+// three of them. The worst measured is reported; the tolerance is 16 ε of the type, and
+// 32 ε for the chained voidage ratio and the equivalent exponent (−ln(β/β₁)/ln ε, whose
+// rounding ln ε amplifies by 1/|ln ε| = 7.5 at ε = 0.875).
+constexpr long double tolerance = 16, chained_tolerance = 32;
+
+template <class T>
+Fluid<T> fluid_of(const test::ScalarTypeRow& row, std::size_t at) {
+  return {row.in<T>(at), row.in<T>(at + 1)};
+}
+
+template <class T>
+Particles<T> particles_of(const test::ScalarTypeRow& row, std::size_t at) {
+  return {row.in<T>(at + 2), row.in<T>(at + 3)};
+}
+
+template <class T>
+T required(const std::optional<T>& value) {
+  REQUIRE(value.has_value());
+  return *value;
+}
+
+// Every quantity of the table's settling rows, as a function of the row in T.
+template <class T>
+std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_quantities() {
+  using Row = test::ScalarTypeRow;
+  std::map<std::string, std::function<T(const Row&)>> q{
+      {"rz_exponent_mazzei", [](const Row& r) { return richardson_zaki_exponent_mazzei(r.in<T>(0)); }},
+      {"rz_exponent_mazzei_derivative",
+       [](const Row& r) { return richardson_zaki_exponent_mazzei_derivative(r.in<T>(0)); }},
+      {"rz_exponent_rowe1987", [](const Row& r) { return richardson_zaki_exponent_rowe(r.in<T>(0)); }},
+      {"rz_exponent_garside_aldibouni1977",
+       [](const Row& r) { return richardson_zaki_exponent_garside_al_dibouni(r.in<T>(0)); }},
+      {"rz_exponent_khan_richardson1989",
+       [](const Row& r) { return richardson_zaki_exponent_khan_richardson(r.in<T>(0), r.in<T>(1)); }},
+      {"rz_exponent_richardson_zaki1954",
+       [](const Row& r) { return richardson_zaki_exponent_1954(r.in<T>(0), r.in<T>(1)); }},
+      {"richardson_zaki_velocity",
+       [](const Row& r) { return richardson_zaki_velocity(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+      {"richardson_zaki_voidage",
+       [](const Row& r) { return richardson_zaki_voidage(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+      {"richardson_zaki_terminal_reynolds",
+       [](const Row& r) { return richardson_zaki_terminal_reynolds(r.in<T>(0), r.in<T>(1)); }},
+      {"terminal_reynolds_stokes", [](const Row& r) { return terminal_reynolds_stokes(r.in<T>(0)); }},
+      {"terminal_reynolds_newton", [](const Row& r) { return terminal_reynolds_newton(r.in<T>(0)); }},
+      {"terminal_reynolds_dallavalle", [](const Row& r) { return terminal_reynolds_dallavalle(r.in<T>(0)); }},
+      {"terminal_reynolds_schiller_naumann",
+       [](const Row& r) { return terminal_reynolds_schiller_naumann(r.in<T>(0)); }},
+      {"terminal_velocity_stokes",
+       [](const Row& r) { return terminal_velocity_stokes(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+      {"terminal_velocity_newton",
+       [](const Row& r) { return terminal_velocity_newton(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+      {"terminal_velocity_dallavalle",
+       [](const Row& r) { return terminal_velocity_dallavalle(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+      {"terminal_velocity_schiller_naumann",
+       [](const Row& r) { return terminal_velocity_schiller_naumann(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+      {"minimum_fluidization_velocity_ergun",
+       [](const Row& r) {
+         return minimum_fluidization_velocity_ergun(fluid_of<T>(r, 0), particles_of<T>(r, 0), r.in<T>(4), r.in<T>(5));
+       }},
+      {"minimum_fluidization_reynolds_ergun",
+       [](const Row& r) { return minimum_fluidization_reynolds_ergun(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+      {"minimum_fluidization_velocity_wen_yu",
+       [](const Row& r) { return minimum_fluidization_velocity_wen_yu(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+      {"minimum_fluidization_reynolds_wen_yu",
+       [](const Row& r) { return minimum_fluidization_reynolds_wen_yu(r.in<T>(0)); }},
+      {"equilibrium_voidage_RichardsonZaki",
+       [](const Row& r) {
+         return required(richardson_zaki_equilibrium_voidage(r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
+       }},
+      {"bed_height", [](const Row& r) { return bed_height(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+  };
+  for (const drag::AnyDragLaw& law : drag::all_drag_laws) {
+    const std::string name(drag::name_of(law));
+    q["equilibrium_voidage_" + name] = [law](const Row& r) {
+      return required(equilibrium_voidage(law, r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
+    };
+    q["voidage_ratio_" + name] = [law](const Row& r) { return required(voidage_ratio(law, r.in<T>(0), r.in<T>(1))); };
+    q["equivalent_exponent_" + name] = [law](const Row& r) { return equivalent_exponent(law, r.in<T>(0), r.in<T>(1)); };
+  }
+  return q;
+}
+
+bool chained(const std::string& quantity) {
+  return quantity.starts_with("voidage_ratio_") || quantity.starts_with("equivalent_exponent_");
+}
+
+}  // namespace
+
+TEST_CASE_TEMPLATE("every settling function and the equilibrium of every drag law agree with mpmath", T,
+                   FLUIDBED_SCALAR_TYPES) {
+  const auto quantities = settling_quantities<T>();
+  std::set<std::string> seen;
+  test::WorstError worst, worst_chained;
+  for (const test::ScalarTypeRow& row : test::scalar_type_rows("settling")) {
+    INFO(row.closure << " (" << double(row.p[0]) << ", " << double(row.p[1]) << ", " << double(row.p[2]) << ", "
+                     << double(row.p[3]) << ")");
+    const auto quantity = quantities.find(row.closure);
+    REQUIRE_MESSAGE(quantity != quantities.end(), "no function for the reference quantity " << row.closure);
+    seen.insert(row.closure);
+    const T value = quantity->second(row);
+    REQUIRE(std::isfinite(value));
+    const long double e = test::error_in_epsilons(value, row.value);
+    CHECK(e <= (chained(row.closure) ? chained_tolerance : tolerance));
+    (chained(row.closure) ? worst_chained : worst).record(e, row.closure);
+  }
+  for (const auto& [name, function] : quantities) CHECK_MESSAGE(seen.count(name) == 1, name << " has no rows");
+  MESSAGE("worst " << double(worst.epsilons) << " eps (" << worst.where << "), chained "
+                   << double(worst_chained.epsilons) << " eps (" << worst_chained.where << ")");
+}
+
+// Richardson & Zaki (1954) switch at Re_t = 0.2, 1, 200 and 500: each band includes its lower
+// end, in every type (0.2L lies below the double 0.2: compared with it, a long double
+// Re_t = 0.2 took the band below).
+TEST_CASE_TEMPLATE("Richardson-Zaki 1954: each band starts at its switch in the argument's type", T,
+                   FLUIDBED_SCALAR_TYPES) {
+  const T wall = T(0);
+  CHECK(richardson_zaki_exponent_1954(T(0.2L), wall) == T(4.35L) * std::pow(T(0.2L), T(-0.03L)));
+  CHECK(richardson_zaki_exponent_1954(std::nextafter(T(0.2L), T(0)), wall) == T(4.65L));
+  CHECK(richardson_zaki_exponent_1954(T(1), wall) == T(4.45L));
+  CHECK(richardson_zaki_exponent_1954(T(500), wall) == T(2.39L));
+}
