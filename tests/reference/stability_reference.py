@@ -277,6 +277,10 @@ def analyse(sysm, model, with_C=True):
     a, b = SCAN[i - 1], SCAN[i + 1]
     assert dS(a) > 0 > dS(b)
     em = bisect_root(dS, a, b, dS(a))
+    # the maximum is the root of dS/deps, located to |S'/S''| < 1e-30 (the max_voidage column, which the
+    # library's argmax is tested against to 1e-13 relative in double), and a maximum: S'' < 0
+    d2S = diff(f, em, 2)
+    assert d2S < 0 and abs(dS(em) / d2S) < tiny(30), (model, em, dS(em), d2S)
     return roots, em, f(em)
 
 
