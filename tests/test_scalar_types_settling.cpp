@@ -146,3 +146,18 @@ TEST_CASE_TEMPLATE("Richardson-Zaki 1954: each band starts at its switch in the 
   CHECK(richardson_zaki_exponent_1954(T(1), wall) == T(4.45L));
   CHECK(richardson_zaki_exponent_1954(T(500), wall) == T(2.39L));
 }
+
+// Syamlal–O'Brien calibrated from a minimum fluidization state (u_mf, ε_mf) holds the bed at
+// ε_mf at u_mf (its documented property), below and above the switch at ε = 0.85; the
+// parameters c1, d1 are computed in T.
+TEST_CASE_TEMPLATE("Syamlal-O'Brien calibrated from minimum fluidization holds the bed at that voidage", T,
+                   FLUIDBED_SCALAR_TYPES) {
+  const Fluid<T> water{T(1000), T(9.765625e-4L)};
+  const Particles<T> sand{T(2500), T(2.44140625e-4L)};
+  for (const auto& [voidage, velocity] : {std::pair{T(0.4375L), T(0.001953125L)}, std::pair{T(0.875L), T(0.015625L)}}) {
+    const drag::SyamlalOBrien law = drag::SyamlalOBrien::from_minimum_fluidization(velocity, voidage, water, sand);
+    INFO("eps_mf " << double(voidage) << ": c1 " << law.c1() << ", d1 " << law.d1());
+    const T equilibrium = required(equilibrium_voidage(law, velocity, water, sand));
+    CHECK(test::error_in_epsilons(equilibrium, static_cast<long double>(voidage)) <= chained_tolerance);
+  }
+}

@@ -481,6 +481,26 @@ def kinetic_theory_rows():
             v = pf * sin(angle) / (2 * sqrt(dd / 2 + floor ** 2))
             row('kinetic_theory', 'frictional_viscosity:schaeffer', (pf, dd, angle, floor), v)
             n += 1
+    # Srivastava-Sundaresan (closure frictional_stress:srivastava_sundaresan): p1 = phi, p2 = Theta, p3 = d,
+    # p4 = div u, p5 = D':D', p6 = friction angle [rad, a double], critical-state pressure Johnson-Jackson
+    # with phi_min 0.55, phi_max 0.63, Fr 0.05 (doubles), a = 2, b = 5; the floor s is the double 1e-6;
+    # value = p_f, d1 = dp_f/dphi (its condition in phi, for the tolerance), d2 = mu_f
+    saved_floor, saved_delta = kt.S_FLOOR, kt.DELTA
+    kt.S_FLOOR, kt.DELTA = of_double(1e-6), of_double(0.01)
+    for ps in ('0.59375', '0.625'):
+        for ts in ('0', '0.0625'):
+            for div_s in ('0.5', '0', '-0.25'):
+                p, T, d, divu, dd = exact(ps), exact(ts), exact(AIR[2]), exact(div_s), exact('2')
+                pmin, pmax, fr = of_double(0.55), of_double(0.63), of_double(0.05)
+                br = (p > pmin, p <= pmax - kt.DELTA)
+
+                def stress(q):
+                    return kt.ss_fric(kt.p_fric_jj(q, pmin, pmax, fr, 2, 5, br), T, d, divu, dd, angle * 180 / kt.pi)
+                pf, mu_f, _ = stress(p)
+                row('kinetic_theory', 'frictional_stress:srivastava_sundaresan', (p, T, d, divu, dd, angle), pf,
+                    diff(lambda q: stress(q)[0], p), mu_f)
+                n += 1
+    kt.S_FLOOR, kt.DELTA = saved_floor, saved_delta
     # gas exchange: damping (p1 = beta, p2 = Theta); Koch-Sangani (p1 = phi, p2 = Theta, p3 = g0, p4 = slip,
     # p5 = mu_g, p6 = d, p7 = rho_s); drag source (p1 = phi, p2 = Theta, p3 = beta, p4 = slip, p5 = d,
     # p6 = rho_s); the floor Theta_s is the double 1e-6
