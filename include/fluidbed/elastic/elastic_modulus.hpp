@@ -1,5 +1,5 @@
 // fluidbed — the elastic force of a fluidized suspension: the part of the drag that comes
-// from voidage gradients (seed 000 §3.5; note seed000-closures §7).
+// from voidage gradients (seed 000 §3.5).
 //
 // A particle in a voidage gradient feels the drag of the voidage a small distance upstream,
 // ε̃ = ε − θ ∂ε/∂x with θ = (2/3) d (eqs. 3.84–3.86). To first order the extra force per unit

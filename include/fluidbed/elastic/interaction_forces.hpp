@@ -1,5 +1,5 @@
-// fluidbed — the fluid–particle interaction forces other than drag (seed 000 §3.3; note
-// seed000-closures §1), per unit volume of suspension [N m⁻³], as the force the fluid exerts
+// fluidbed — the fluid–particle interaction forces other than drag (seed 000 §3.3), per unit
+// volume of suspension [N m⁻³], as the force the fluid exerts
 // on the particles (it enters the particle momentum equation with +, the fluid's with −).
 //
 // φ = 1 − ε is the solid volume fraction; g is the gravity vector (pointing down); every

@@ -1,5 +1,5 @@
 // fluidbed — linear stability of homogeneous fluidization and the minimum bubbling point
-// (seed 000 §4.6.1; note seed000-closures §8.4–8.5).
+// (seed 000 §4.6.1, Tables 4.5 and 4.6).
 //
 // One-dimensional two-fluid model, x upward, particle stresses neglected, interaction force =
 // buoyancy + drag + elastic force. Linearising about the homogeneous state (ε̄, particles at

@@ -175,8 +175,8 @@ requires DragLawFor<Law, T> T equilibrium_voidage_checked(const Law& law, const 
 // ----------------------------------------------------------------------------- Richardson–Zaki
 
 // The Richardson–Zaki expansion ε = (u_s/u_t)^(1/n) with Dallavalle's u_t and n from
-// seed 000 eq. 3.24 at Re_t: the ε_R&Z column of seed 000 Table 4.4 (note §10 item 4),
-// and exactly the expansion of the Mazzei–Lettieri drag. Nothing when u_s >= u_t.
+// seed 000 eq. 3.24 at Re_t: the ε_R&Z column of seed 000 Table 4.4 (only Dallavalle's u_t
+// reproduces it), and exactly the expansion of the Mazzei–Lettieri drag. Nothing when u_s >= u_t.
 // Preconditions: u_s > 0, ρ_f, μ_f, d, g > 0, ρ_p > ρ_f.
 template <class T>
 std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_velocity, const Fluid<T>& fluid,
@@ -204,7 +204,7 @@ T richardson_zaki_equilibrium_voidage_checked(const T& superficial_velocity, con
 // ----------------------------------------------------------------------------- comparisons
 
 // ε_law / ε_R&Z at the equilibrium Reynolds number Re = ρ_f u_s d/μ_f and the
-// Richardson–Zaki voidage ε_R&Z, as plotted in seed 000 Figs 3.1–3.5 (note §9):
+// Richardson–Zaki voidage ε_R&Z, as plotted in seed 000 Figs 3.1–3.5:
 //   1. Re_t from Re = Re_t ε_R&Z^n(Re_t)           (richardson_zaki_terminal_reynolds);
 //   2. Ar = ¾ C_D(Re_t) Re_t², Dallavalle's C_D   (the system whose R–Z bed that is);
 //   3. ε_law from eq. 3.28 at (Re, Ar)            (equilibrium_voidage).
@@ -268,7 +268,7 @@ requires DragLawFor<Law, T> T equivalent_exponent_checked(const Law& law, const 
 // ----------------------------------------------------------------------------- bed height
 
 // h = h₀ (1 − ε₀)/(1 − ε): the height of a bed of fixed solids inventory at voidage ε,
-// given its height h₀ at ε₀ (solids volume conservation; seed 000 §4.3.3, note §8.1).
+// given its height h₀ at ε₀ (solids volume conservation; seed 000 §4.3.3, eq. 4.5).
 // Preconditions: h₀ > 0, ε₀, ε ∈ (0, 1).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T bed_height(const T& initial_height, const T& initial_voidage, const T& voidage) {

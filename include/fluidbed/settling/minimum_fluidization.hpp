@@ -38,8 +38,8 @@ void validate_ergun_bed(std::string_view function, const T& voidage, const T& sp
 //   150 (1 − ε_mf) Re_mf / (ε_mf³ φ_s²) + 1.75 Re_mf² / (ε_mf³ φ_s) = Ar
 //
 // (Ergun's pressure drop with the surface–volume diameter φ_s d, equated to the weight
-// (1 − ε_mf)(ρ_p − ρ_f) g; seed 000 note §3 for φ_s = 1, the same relation as the Ergun
-// drag law's equilibrium, eq. 3.28). A quadratic a Re² + b Re = Ar, solved in the
+// (1 − ε_mf)(ρ_p − ρ_f) g; for φ_s = 1 it is the equilibrium, eq. 3.28, of seed 000's Ergun
+// drag, eq. 3.32, which gives the u_mf = 8.73·10⁻³ m s⁻¹ of its §4.3.3). A quadratic a Re² + b Re = Ar, solved in the
 // cancellation-free form Re_mf = 2 Ar / (b + √(b² + 4 a Ar)).
 // Preconditions: Ar >= 0, ε_mf ∈ (0, 1), φ_s ∈ (0, 1].
 template <class T>

@@ -201,14 +201,14 @@ struct TerminalReynoldsSolution {
 
 // Halley's method on g(x) = x + n(eˣ) ln ε − ln Re, x = ln Re_t, from the middle of the
 // bracket [ln Re − 2.4 ln ε, ln Re − 4.8 ln ε] (n = 3.6). With y = 0.175 e^(0.75x),
-// r = 1/(1 + y) and L = ln ε (seed 000 note §6.3 writes the same in p = 1 + y):
+// r = 1/(1 + y) and L = ln ε:
 //   n = 2.4 + 2.4 r,  y r = 1 − r,  dy/dx = 0.75 y,
 //   g   = x + 2.4 L − ln Re + 2.4 L r
 //   g'  = 1 − 1.8 L y r²                 = 1 − 1.8 L r (1 − r)          (≥ 1: the root is unique)
 //   g'' = −1.35 L y (1 − y) r³           = −1.35 L r (1 − r)(2r − 1)
 // and the Halley step 2 g g'/(2 g'² − g g''): one exp and two divisions per step, no pow.
 // Written in r ∈ [0, 1], every term is bounded by a multiple of |L| and of the distance to
-// the root, whatever Re and ε: the form in p (g = G/p, S₁ = p² g', S₂ = p³ g'') squares
+// the root, whatever Re and ε: written in p = 1 + y (g = G/p, S₁ = p² g', S₂ = p³ g''), it squares
 // S₁ ≈ y², which overflows once ln Re_t >~ 239 (double) or 32 (float) and turns the step
 // into ∞/∞. Here y may overflow to +∞ (Re_t beyond the range of T) and r is then 0: n = 2.4
 // exactly and g is linear.

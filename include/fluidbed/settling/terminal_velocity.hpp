@@ -11,8 +11,8 @@
 //   Newton            C_D = 0.44                    Re_t = √(Ar/0.33)      (seed 000 eq. 3.41)
 //   Dallavalle        C_D = (0.63 + 4.8/√Re)²       closed form below     (seed 000 eq. 3.51)
 //   Schiller–Naumann  C_D = 24/Re (1 + 0.15 Re^0.687), 0.44 for Re >= 1000  (eq. 3.35; solved)
-// Seed 000 uses Dallavalle's u_t for Richardson–Zaki and for its Tables 4.4 and 4.6
-// (note §10 item 4); Stokes and Newton are the Schiller–Naumann limits its exponent
+// Seed 000 uses Dallavalle's u_t for Richardson–Zaki and for its Tables 4.4 and 4.6 (no other
+// u_t reproduces them); Stokes and Newton are the Schiller–Naumann limits its exponent
 // derivations use.
 //
 // Heavier-than-fluid particles only (ρ_p > ρ_f: Ar > 0). The hot-path functions assert
@@ -94,7 +94,7 @@ FLUIDBED_HOST_DEVICE T terminal_reynolds_newton(const T& archimedes) {
 
 // Dallavalle, J.M. (1948), Micromeritics, 2nd ed., Pitman; seed 000 eq. 3.51:
 // C_D = (0.63 + 4.8 Re^−½)², so ¾ C_D Re_t² = ¾ (0.63 Re_t + 4.8 √Re_t)² = Ar is a quadratic
-// in √Re_t (seed note §2):
+// in √Re_t:
 //
 //   √Re_t = [−4.8 + √(4.8² + 4·0.63·s)] / (2·0.63) = 2 s / (4.8 + √(4.8² + 2.52 s)),  s = √(4Ar/3),
 //
