@@ -1,24 +1,12 @@
 #!/usr/bin/env bash
 # Builds fluidbed's API reference with Doxygen (docs/Doxyfile) into build/api/html; open
-# build/api/html/index.html. Installs Debian's doxygen, graphviz (include graphs) and
-# libjs-mathjax (the catalogue's formulas) if they are missing, as
-# scripts/install_dependencies.sh does. Fails if Doxygen reports any warning: they are in
+# build/api/html/index.html. Installs what it needs first (scripts/install_dependencies.sh:
+# Debian's doxygen, graphviz for the include graphs, libjs-mathjax for the formulas). Fails if Doxygen reports any warning: they are in
 # build/api/doxygen_warnings.log (a broken reference, a comment Doxygen cannot parse).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(doxygen graphviz libjs-mathjax python3)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "fluidbed: installing ${missing[*]}"
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+bash scripts/install_dependencies.sh
 
 rm -rf build/api
 mkdir -p build/api

@@ -53,6 +53,10 @@ for script in "$copy"/*.gp; do
 done
 
 echo
+echo "==== API reference (Doxygen)"
+bash scripts/build_api_docs.sh || failed+=("API reference")
+
+echo
 echo "Pictures: $plots/*.png"
 for png in "$plots"/*.png; do [ -e "$png" ] && echo "  $png"; done
 if ((${#failed[@]})); then
