@@ -2,11 +2,12 @@
 // Koch–Hill) and Syamlal–O'Brien: published and independently checked values, exact
 // limits and identities, switch continuity, positivity, and derivatives.
 //
-// Sources of expected values: seed 002 note §2.6, §2.8, §9.1, §9.2, §9.3, §9.4 (values
-// re-computed there in Python from the published formulas); the anchors survey's appendix
-// (re-evaluations of the codes' formulas, not published data: a cross-check of the
-// conventions, to the digits printed); exact limits; and the mpmath generator's
-// polydisperse table (tests/reference/drag_reference.py).
+// Sources of expected values: an independent double-precision Python evaluation of the
+// published formulas (seed 002 eqs. 18, 19, 46, 47 and Sec. II-III, Beetstra et al. 2007) made
+// when seed 002 was read, to the digits printed; a re-evaluation of the drag laws exactly as
+// OpenFOAM, MFiX 25.2.1 and waLBerla write them (not published data: a cross-check of the
+// conventions, to the digits printed); exact limits; and the mpmath generator's polydisperse
+// table (tests/reference/drag_reference.py).
 #include <doctest/doctest.h>
 
 #include <array>
@@ -57,7 +58,7 @@ void check_printed(double x, double expected, double half_unit) {
 }  // namespace
 
 // ------------------------------------------------------------------------ van der Hoef 2005
-TEST_CASE("VanDerHoef2005: Stokes fit F0(φ) and A of seed 002 eq. (19) (note §2.6 table)") {
+TEST_CASE("VanDerHoef2005: Stokes fit F0(φ) and A of seed 002 eq. (19) (the independent evaluation)") {
   struct Row {
     double phi, a, f0;
   };
@@ -83,7 +84,7 @@ TEST_CASE("VanDerHoef2005: Stokes fit F0(φ) and A of seed 002 eq. (19) (note §
 }
 
 // ------------------------------------------------------------------------ Beetstra 2007
-TEST_CASE("Beetstra2007: published-form F(φ, Re) of seed 002 note §9.2, in air and in water") {
+TEST_CASE("Beetstra2007: published-form F(φ, Re) of the independent evaluation, in air and in water") {
   struct Row {
     double phi, re, f;
   };
@@ -104,7 +105,8 @@ TEST_CASE("Beetstra2007: published-form F(φ, Re) of seed 002 note §9.2, in air
       CHECK(drag_force(Beetstra2007{}(s).pressure_gradient(), s) == doctest::Approx(r.f).epsilon(1e-9));
       CHECK(Beetstra2007::dimensionless_force(r.phi, r.re) == doctest::Approx(r.f).epsilon(1e-9));
     }
-  // The misprinted seed eq. (19) would give 16.14752691 at φ = 0.1, Re = 100 (note D1).
+  // Seed 002 eq. (19) as printed (8.4 Re^−0.343 outside the factor 0.31) would give 16.14752691 at
+  // φ = 0.1, Re = 100.
   CHECK(Beetstra2007::dimensionless_force(0.1, 100.0) < 9.0);
   // Single-sphere end (φ = 1e-9): the fit is not Schiller–Naumann (1.15, 1.72961, 4.54888, 18.3333).
   const std::array<std::array<double, 2>, 4> dilute{{{1, 1.08093}, {10, 1.62931}, {100, 5.27230}, {1000, 30.78770}}};
@@ -112,7 +114,7 @@ TEST_CASE("Beetstra2007: published-form F(φ, Re) of seed 002 note §9.2, in air
     CHECK(Beetstra2007::dimensionless_force(1e-9, re) == doctest::Approx(f).epsilon(1e-5));
 }
 
-TEST_CASE("Beetstra2007: Ergun-form LHS (note §9.1) and dimensional β (note §9.2, §9.4)") {
+TEST_CASE("Beetstra2007: Ergun-form LHS (seed 002 eqs. 18, 46) and dimensional β (the independent evaluation)") {
   struct Row {
     double eps, re, lhs;
   };
@@ -132,13 +134,14 @@ TEST_CASE("Beetstra2007: Ergun-form LHS (note §9.1) and dimensional β (note §
     INFO("eps=" << r.eps << " Re=" << r.re);
     CHECK(lhs == doctest::Approx(r.lhs).epsilon(1e-9));
   }
-  // §9.4: air at 1.01e5 Pa and 293 K (M = 0.02896 kg/mol), μ = 1.8e-5 Pa s, d = 500 µm.
-  const Fluid<double> note_air{.density = 1.01e5 * 0.02896 / (8.314 * 293.0), .viscosity = 1.8e-5};
+  // Air at 1.01e5 Pa and 293 K (M = 0.02896 kg/mol), μ = 1.8e-5 Pa s, d = 500 µm.
+  const Fluid<double> air_293_k{.density = 1.01e5 * 0.02896 / (8.314 * 293.0), .viscosity = 1.8e-5};
   const std::array<std::array<double, 3>, 4> dimensional{
       {{0.4, 0.5, 12255.452941}, {0.6, 0.5, 4188.344370}, {0.8, 0.5, 1147.828255}, {0.95, 1.0, 227.126998}}};
   for (const auto& [eps, w, beta] : dimensional)
-    check_printed(Beetstra2007{}(state(eps, w, note_air)).pressure_gradient(), beta, 5e-7);
-  // §2.2 round trip at φ = 0.3, Re = 10: β = 2253.310967, β d²/μ = 31.29598565, F_tot = 11.82765898.
+    check_printed(Beetstra2007{}(state(eps, w, air_293_k)).pressure_gradient(), beta, 5e-7);
+  // Seed 002 Sec. II.D conversion round trip at φ = 0.3, Re = 10: β = 2253.310967, β d²/μ = 31.29598565,
+  // F_tot = 11.82765898.
   const auto s = at_reynolds(0.7, 10.0);
   const double beta = Beetstra2007{}(s).pressure_gradient();
   CHECK(beta == doctest::Approx(2253.310967).epsilon(1e-9));
@@ -164,8 +167,8 @@ TEST_CASE("Beetstra2007 is VanDerHoef2005 at Re = 0 exactly, and tends to it con
   }
 }
 
-// ------------------------------------------------------------------------ anchors appendix
-TEST_CASE("conventions agree with the anchors' re-evaluation of the codes (appendix, not published data)") {
+// ------------------------------------------------------------------------ the codes, re-evaluated
+TEST_CASE("conventions agree with a re-evaluation of the codes' formulas (not published data)") {
   // Air ρ = 1.2, μ = 1.8e-5, d = 500 µm, w = 0.5 m/s; β_pg at φ = 0.05, 0.2, 0.4, 0.55.
   const std::array<double, 4> voidages{0.95, 0.8, 0.6, 0.45};
   struct Expected {
@@ -183,7 +186,7 @@ TEST_CASE("conventions agree with the anchors' re-evaluation of the codes (appen
   check_row(KochHill{}, {{{157.7, 0.05}, {1182, 0.5}, {3876, 0.5}, {9492, 0.5}}});
   check_row(SyamlalOBrien{}, {{{175.7, 0.05}, {1131, 0.5}, {3221, 0.5}, {5648, 0.5}}});
 
-  // Tenneti's three code conventions at φ = 0.4 (anchors §2.8): MFiX 25.2.1 = this/ε = 6897,
+  // Tenneti's three code conventions at φ = 0.4 (tenneti.hpp): MFiX 25.2.1 = this/ε = 6897,
   // OpenFOAM 18 μ φ [F_iso + ε² (F_φ + F_φRe)]/d² = 3540, this law (waLBerla) 4138.
   const auto s = state(0.6, 0.5);
   const double beta = Tenneti2011{}(s).pressure_gradient();
@@ -256,7 +259,7 @@ TEST_CASE("Tenneti2011: isolated-sphere limit F_tot → 1 + 0.15 Re^0.687 and th
 }
 
 // ------------------------------------------------------------------------ Koch–Hill
-TEST_CASE("KochHill: dense Stokes limit 10φ/ε³ (seed 002 note §9.3) and dilute limits") {
+TEST_CASE("KochHill: dense Stokes limit 10φ/ε³ (the independent evaluation) and dilute limits") {
   // F0 = 10φ/ε³ for φ >= 0.4: 40 at ε = 0.5, 259.2592593 at ε = 0.3 (A_o = 180).
   for (const auto& [eps, f] : {std::array<double, 2>{0.5, 40.0}, std::array<double, 2>{0.3, 259.2592593}}) {
     const auto s = state(eps, 0.0);
@@ -405,7 +408,7 @@ PolydisperseDragState<double> species_state(const std::vector<Species<double>>& 
 
 }  // namespace
 
-TEST_CASE("Beetstra polydisperse: mixture moments and correction factors (seed 002 note §2.8 table)") {
+TEST_CASE("Beetstra polydisperse: mixture moments and correction factors (the independent evaluation)") {
   struct Row {
     std::vector<double> phi, d;
     double sauter;

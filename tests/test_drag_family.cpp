@@ -172,8 +172,9 @@ TEST_CASE("single-particle C_D·Re agrees with the mpmath reference and the seed
     else
       FAIL("unknown coefficient " << name);
   }
-  // seed 000 note §4 [checked]: C_D(1) = 27.6, C_D(10) = 4.151066, C_D(100) = 1.091731,
-  // the 0.4 % jump at Re = 1000; note §6.4: Dallavalle C_D(10) = 4.6134455.
+  // An independent double-precision evaluation of seed 000 eqs. 3.35 and 3.55 made when the
+  // thesis was read: C_D(1) = 27.6, C_D(10) = 4.151066, C_D(100) = 1.091731, the 0.4 % jump at
+  // Re = 1000; Dallavalle C_D(10) = 4.6134455.
   CHECK(drag_coefficient<SchillerNaumannCoefficient>(1.0) == doctest::Approx(27.6).epsilon(1e-12));
   CHECK(drag_coefficient<SchillerNaumannCoefficient>(10.0) == doctest::Approx(4.151066).epsilon(1e-6));
   CHECK(drag_coefficient<SchillerNaumannCoefficient>(100.0) == doctest::Approx(1.091731).epsilon(1e-6));
@@ -242,7 +243,7 @@ TEST_CASE("Gidaspow: documented jump at ε = 0.8, blend continuous and centred t
     const double at = switched(state(0.8, w)).pressure_gradient();
     CHECK(below == doctest::Approx(Ergun{}(state(std::nextafter(0.8, 0.0), w)).pressure_gradient()).epsilon(1e-15));
     CHECK(at == ConstantExponentDrag::wen_yu_gidaspow()(state(0.8, w)).pressure_gradient());
-    if (w > 0.1) CHECK(std::abs(at / below - 1.0) > 0.05);  // a real discontinuity (note seed002 §2.4)
+    if (w > 0.1) CHECK(std::abs(at / below - 1.0) > 0.05);  // a real discontinuity (Wen–Yu/Ergun ≠ 1 at 0.8)
     // The blend is the mean of the two laws at 0.8 and continuous through it.
     CHECK(blended(state(0.8, w)).pressure_gradient() ==
           doctest::Approx(0.5 * (Ergun{}(state(0.8, w)).pressure_gradient() + at)).epsilon(1e-14));
@@ -262,7 +263,7 @@ TEST_CASE("Di Felice: χ minimum 3.05 (α_d = 2.05) exactly at Re = 10^1.5, 3.7 
   CHECK(Law::exponent(0.0) == 3.7);
   CHECK(Law::exponent(1e-8) == doctest::Approx(3.7).epsilon(1e-12));
   CHECK(Law::exponent(1e12) == doctest::Approx(3.7).epsilon(1e-12));
-  // Seed 000 note §5 [checked]: α_d(28) = 2.05091, α_d(1) = α_d(1000) = 2.488976.
+  // Seed 000 eq. 3.48, evaluated independently: α_d(28) = 2.05091, α_d(1) = α_d(1000) = 2.488976.
   CHECK(Law::exponent(28.0) - 1.0 == doctest::Approx(2.05091).epsilon(1e-5));
   CHECK(Law::exponent(1.0) - 1.0 == doctest::Approx(2.488976).epsilon(1e-6));
   CHECK(Law::exponent(1000.0) == doctest::Approx(Law::exponent(1.0)).epsilon(1e-14));

@@ -1,8 +1,8 @@
 // Elastic modulus and elastic force (seed 000 §3.5) and the other interaction forces (§3.3).
 // References: the independent mpmath generator tests/reference/stability_reference.py
-// (elastic_functions_reference.csv, elastic_state_reference.csv), the E_r^e/E_j table the
-// seed note marks [checked], exact limits (eq. 3.112, 4.38) and exact identities (eqs. 3.9,
-// 3.13–3.14, 3.20).
+// (elastic_functions_reference.csv, elastic_state_reference.csv), an E_r^e/E_j table from an
+// independent double-precision evaluation of eqs. 3.95 and 3.111 made when the thesis was read,
+// exact limits (eq. 3.112, 4.38) and exact identities (eqs. 3.9, 3.13–3.14, 3.20).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -70,8 +70,9 @@ TEST_CASE("H is finite at Re* = 0 and equals the Jean-Fan -4.8/eps there and at 
   }
 }
 
-TEST_CASE("E_r^e over E_j: the seed note's checked table and the limits of eq. 3.112") {
-  // note seed000-closures §7.3: E_r^e/E_j at ε = 0.5 and 0.9, to the 5 printed digits.
+TEST_CASE("E_r^e over E_j: an independently evaluated table and the limits of eq. 3.112") {
+  // E_r^e/E_j = H/(−4.8/ε) at ε = 0.5 and 0.9 (eqs. 3.95, 3.111), from an independent
+  // double-precision evaluation made when the thesis was read, to its 5 printed digits.
   const double re[] = {1e-10, 1e-3, 1, 10, 100, 1e4, 1e12};
   const double at_half[] = {1.00000, 1.00241, 0.89187, 0.74135, 0.77793, 0.96329, 1.00000};
   const double at_nine_tenths[] = {1.00000, 1.00345, 1.00867, 0.92855, 0.88206, 0.96904, 1.00000};

@@ -1,9 +1,10 @@
 // Kinetic theory of granular flow, one solids class: radial distribution functions,
 // pressure, viscosities, conductivity, dissipation, algebraic granular temperature.
 // References: the independent mpmath generator tests/reference/ktgf_reference.py
-// (ktgf_reference.csv: values and mpmath.diff derivatives), the numbers printed in the
-// notes of seeds 001 and 004 (each quoted where used), exact limits and identities, and
-// finite differences of the library's own values for the derivatives.
+// (ktgf_reference.csv: values and mpmath.diff derivatives), an independent double-precision
+// evaluation of the seeds' formulas made when seeds 001 and 004 were read (6 significant
+// figures, or double-precision digits for seed 001's closures; each quoted where used), exact
+// limits and identities, and finite differences of the library's own values for the derivatives.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -25,9 +26,10 @@ using fluidbed::test::relative_difference;
 
 namespace {
 
-// The seed-004 note's state (Part 3): d = 500 µm, ρ_s = 2500, e = 0.9, Θ = 0.01.
-const GranularMaterial<double> note_material{500e-6, 2500.0, 0.9};
-constexpr double note_theta = 0.01;
+// The state of the independent evaluation of seed 004's closures: d = 500 µm, ρ_s = 2500,
+// e = 0.9, Θ = 0.01.
+const GranularMaterial<double> state_material{500e-6, 2500.0, 0.9};
+constexpr double state_theta = 0.01;
 
 }  // namespace
 
@@ -126,30 +128,31 @@ TEST_CASE("the algebraic granular temperature in simple shear agrees with the mp
   CHECK(rows == 112);
 }
 
-TEST_CASE("seed-004 note Part 3 numbers through the ConstitutiveSet (d = 500 um, Theta = 0.01, e = 0.9)") {
-  // Note §3.2–3.5 (6 significant figures), Ogawa φ_max = 0.63 and Carnahan–Starling.
+TEST_CASE("seed-004 closures evaluated independently, through the ConstitutiveSet (d = 500 um, Theta = 0.01)") {
+  // The independent evaluation (6 significant figures), Ogawa φ_max = 0.63 and Carnahan–Starling.
   const ConstitutiveSet ogawa{Ogawa{0.63}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}};
   const ConstitutiveSet cs{CarnahanStarling{}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}};
-  const auto a = ogawa(0.3, note_theta, note_material);
+  const auto a = ogawa(0.3, state_theta, state_material);
   CHECK(a.radial_distribution == doctest::Approx(4.56406).epsilon(5e-6));
   CHECK(a.pressure == doctest::Approx(46.5227).epsilon(5e-6));
   CHECK(a.shear_viscosity == doctest::Approx(0.0692993).epsilon(5e-6));
   CHECK(a.bulk_viscosity == doctest::Approx(0.0733873).epsilon(5e-6));
   CHECK(a.conductivity == doctest::Approx(0.279639).epsilon(5e-6));
   CHECK(a.dissipation == doctest::Approx(2641.94).epsilon(5e-6));
-  const auto b = cs(0.55, note_theta, note_material);
+  const auto b = cs(0.55, state_theta, state_material);
   CHECK(b.radial_distribution == doctest::Approx(7.95610).epsilon(5e-6));
   CHECK(b.pressure == doctest::Approx(242.389).epsilon(5e-6));
   CHECK(b.shear_viscosity == doctest::Approx(0.347369).epsilon(5e-6));
   CHECK(b.bulk_viscosity == doctest::Approx(0.429985).epsilon(5e-6));
   CHECK(b.conductivity == doctest::Approx(1.33483).epsilon(5e-6));
   CHECK(b.dissipation == doctest::Approx(15479.5).epsilon(5e-6));
-  // dp_s/dφ (note §3.2), the Jacobian entry of seed 002 eq. 95.
-  CHECK(ogawa.with_derivatives(0.3, note_theta, note_material).pressure.d_solid_fraction ==
+  // dp_s/dφ (the independent evaluation), the Jacobian entry of seed 002 eq. 95.
+  CHECK(ogawa.with_derivatives(0.3, state_theta, state_material).pressure.d_solid_fraction ==
         doctest::Approx(439.683).epsilon(5e-6));
-  CHECK(cs.with_derivatives(0.55, note_theta, note_material).pressure.d_solid_fraction ==
+  CHECK(cs.with_derivatives(0.55, state_theta, state_material).pressure.d_solid_fraction ==
         doctest::Approx(2222.99).epsilon(5e-6));
-  // Seed 001 §12.4 state A (α_s = 0.3, Θ = 0.01, d = 279 µm, ρ_s = 2480, e = 0.9): FLUENT's
+  // Seed 001's closures evaluated independently at state A (α_s = 0.3, Θ = 0.01, d = 279 µm,
+  // ρ_s = 2480, e = 0.9, its glass beads): FLUENT's
   // per-phase Syamlal kinetic viscosity 0.026951793486765043 = ours/φ, conductivity
   // (Syamlal) 0.10915277022284721.
   const GranularMaterial<double> glass{279e-6, 2480.0, 0.9};
@@ -160,12 +163,13 @@ TEST_CASE("seed-004 note Part 3 numbers through the ConstitutiveSet (d = 500 um,
   CHECK(fluent(0.3, 0.01, glass).pressure == doctest::Approx(46.15050170899907).epsilon(1e-12));
 }
 
-TEST_CASE("each seed misprint the notes list is caught: the printed form differs from the library") {
+TEST_CASE("each seed misprint is caught: the printed form differs from the library") {
   const double g_ogawa_03 = Ogawa{0.63}(0.3), g_ogawa_055 = Ogawa{0.63}(0.55);
-  const GranularMaterial<double>& m = note_material;
-  const double e = m.restitution, rho = m.density, d = m.diameter, theta = note_theta;
+  const GranularMaterial<double>& m = state_material;
+  const double e = m.restitution, rho = m.density, d = m.diameter, theta = state_theta;
   SUBCASE("M1: seed 001 eq. 27, Gidaspow kinetic viscosity with (3 - e) for (1 + e)") {
-    // Seed 001 §12.4 state A: corrected 0.04662042742594844, literal 0.04218038671871525.
+    // Seed 001's state A, evaluated independently: corrected 0.04662042742594844, as printed
+    // 0.04218038671871525.
     const GranularMaterial<double> glass{279e-6, 2480.0, 0.9};
     const double ours = GidaspowViscosity{}.kinetic(0.3, 0.01, g_ogawa_03, glass) / 0.3;  // per phase
     CHECK(ours == doctest::Approx(0.04662042742594844).epsilon(1e-12));
@@ -177,14 +181,14 @@ TEST_CASE("each seed misprint the notes list is caught: the printed form differs
                                std::sqrt(theta / (std::numbers::pi * (1 + e) * g_ogawa_055)) * bracket * bracket +
                            GidaspowViscosity{}.collisional(0.55, theta, g_ogawa_055, m);
     const double ours = GidaspowViscosity{}(0.55, theta, g_ogawa_055, m);
-    CHECK(printed == doctest::Approx(1.42937).epsilon(5e-6));  // the note's literal value
+    CHECK(printed == doctest::Approx(1.42937).epsilon(5e-6));  // eq. 79 as printed, evaluated independently
     CHECK(ours == doctest::Approx(0.945340).epsilon(5e-6));
   }
   SUBCASE("M3: seed 001 eq. 34, dissipation with (1 + e^2) for (1 - e^2)") {
     const double ours = LunDissipation{}(0.3, theta, g_ogawa_03, m);
     const double printed = ours * (1 + e * e) / (1 - e * e);
     CHECK(ours == doctest::Approx(2641.94).epsilon(5e-6));
-    CHECK(printed == doctest::Approx(25168.0).epsilon(5e-6));  // the note's literal value
+    CHECK(printed == doctest::Approx(25168.0).epsilon(5e-6));  // eq. 34 as printed, evaluated independently
     const GranularMaterial<double> elastic{d, rho, 1.0};
     CHECK(LunDissipation{}(0.3, theta, CarnahanStarling{}(0.3), elastic) == 0.0);
   }
@@ -197,7 +201,7 @@ TEST_CASE("each seed misprint the notes list is caught: the printed form differs
     CHECK(relative_difference(ours, printed) > 0.5);
   }
   SUBCASE("M5: seed 004 h_ik, third term 8 r^2 xi/(1 - x)^2 for 8 r^2 xi^2/(1 - x)^3") {
-    // Monodisperse, d = 500 µm, α_max = 0.64: corrected 3.77695, printed 3.47708 (note §3.1).
+    // Monodisperse, d = 500 µm, α_max = 0.64: corrected 3.77695, printed 3.47708 (evaluated independently).
     CHECK(LathouwersBellan{0.64}(0.3) == doctest::Approx(3.77695).epsilon(5e-6));
     const double x = 0.3 / 0.64, r = d / 4, xi = 0.3 / d;
     const double printed = 1 / (1 - x) + 6 * r * xi / ((1 - x) * (1 - x)) + 8 * r * r * xi / ((1 - x) * (1 - x));
@@ -229,22 +233,22 @@ TEST_CASE("limits: g0 -> 1 as phi -> 0, dissipation -> 0 as e -> 1, the dilute v
   for (double e : {1.0, 1.0 - 1e-12, 0.999}) {
     const GranularMaterial<double> m{500e-6, 2500.0, e};
     const double gamma = LunDissipation{}(0.3, 0.01, CarnahanStarling{}(0.3), m);
-    const double reference = LunDissipation{}(0.3, 0.01, CarnahanStarling{}(0.3), note_material) / (1 - 0.81);
+    const double reference = LunDissipation{}(0.3, 0.01, CarnahanStarling{}(0.3), state_material) / (1 - 0.81);
     CHECK(gamma == doctest::Approx(reference * (1 - e * e)).epsilon(1e-9));
   }
   // φ → 0 with g0 → 1: Gidaspow's kinetic viscosity and conductivity tend to 2μ_dil/(1 + e)
-  // and 2κ_dil/(1 + e) (note §3.3–3.4: 0.0121468 and 0.0455503), Syamlal's to 0.
+  // and 2κ_dil/(1 + e) (0.0121468 and 0.0455503, evaluated independently), Syamlal's to 0.
   const double mu_dilute = 5.0 / 96.0 * 2500 * 500e-6 * std::sqrt(std::numbers::pi * 0.01);
   CHECK(mu_dilute == doctest::Approx(0.0115394).epsilon(5e-6));
-  CHECK(GidaspowViscosity{}(0.0, 0.01, CarnahanStarling{}(0.0), note_material) ==
+  CHECK(GidaspowViscosity{}(0.0, 0.01, CarnahanStarling{}(0.0), state_material) ==
         doctest::Approx(2 * mu_dilute / 1.9).epsilon(1e-15));
-  CHECK(GidaspowViscosity{}(0.0, 0.01, CarnahanStarling{}(0.0), note_material) ==
+  CHECK(GidaspowViscosity{}(0.0, 0.01, CarnahanStarling{}(0.0), state_material) ==
         doctest::Approx(0.0121468).epsilon(5e-6));
-  CHECK(GidaspowConductivity{}(0.0, 0.01, CarnahanStarling{}(0.0), note_material) ==
+  CHECK(GidaspowConductivity{}(0.0, 0.01, CarnahanStarling{}(0.0), state_material) ==
         doctest::Approx(0.0455503).epsilon(5e-6));
-  CHECK(SyamlalViscosity{}(0.0, 0.01, 1.0, note_material) == 0.0);
-  CHECK(SyamlalConductivity{}(0.0, 0.01, 1.0, note_material) == 0.0);
-  CHECK(LunPressure{}(1e-12, 0.01, 1.0, note_material) == doctest::Approx(1e-12 * 2500 * 0.01).epsilon(1e-11));
+  CHECK(SyamlalViscosity{}(0.0, 0.01, 1.0, state_material) == 0.0);
+  CHECK(SyamlalConductivity{}(0.0, 0.01, 1.0, state_material) == 0.0);
+  CHECK(LunPressure{}(1e-12, 0.01, 1.0, state_material) == doctest::Approx(1e-12 * 2500 * 0.01).epsilon(1e-11));
 }
 
 TEST_CASE("at Theta = 0 and phi = 0 values are finite and derivatives are never NaN") {
@@ -255,7 +259,7 @@ TEST_CASE("at Theta = 0 and phi = 0 values are finite and derivatives are never 
                                HrenyaSinclairConductivity(0.05)};
   const auto check_all = [](const auto& set, double phi, double theta) {
     INFO("phi = " << phi << " theta = " << theta);
-    const auto r = set.with_derivatives(phi, theta, note_material);
+    const auto r = set.with_derivatives(phi, theta, state_material);
     for (const auto& v :
          {r.radial_distribution, r.pressure, r.shear_viscosity, r.bulk_viscosity, r.conductivity, r.dissipation}) {
       CHECK(std::isfinite(v.value));
@@ -295,7 +299,7 @@ TEST_CASE("derivatives equal central differences across the domain, through the 
         for (double theta : {1e-5, 0.05}) {
           INFO(rdf << " " << law[0] << " " << law[1] << " phi = " << phi << " theta = " << theta);
           const auto f = [&](const auto& p, const auto& t) {
-            return test::constitutive(law[0], law[1], p, t, test::radial_distribution(rdf, p, 0.63), note_material,
+            return test::constitutive(law[0], law[1], p, t, test::radial_distribution(rdf, p, 0.63), state_material,
                                       0.05);
           };
           const D2 r = f(D2::variable(phi, 0), D2::variable(theta, 1));
@@ -353,7 +357,7 @@ TEST_CASE("Theta dependence is exactly a power of Theta: Theta dF/dTheta = k F")
   const ConstitutiveSet set{MaAhmadi{}, LunPressure{}, HrenyaSinclairViscosity(0.01), GidaspowConductivity{}};
   for (double phi : {0.01, 0.3, 0.6})
     for (double theta : {1e-6, 0.02, 3.0}) {
-      const auto r = set.with_derivatives(phi, theta, note_material);
+      const auto r = set.with_derivatives(phi, theta, state_material);
       CHECK(theta * r.pressure.d_granular_temperature == doctest::Approx(r.pressure.value).epsilon(1e-14));
       CHECK(theta * r.shear_viscosity.d_granular_temperature ==
             doctest::Approx(0.5 * r.shear_viscosity.value).epsilon(1e-14));
@@ -365,12 +369,12 @@ TEST_CASE("Theta dependence is exactly a power of Theta: Theta dF/dTheta = k F")
 }
 
 TEST_CASE("strain-rate invariants from a velocity gradient") {
-  // Simple shear u_x = γ̇ y: ∇·u = 0, D':D' = γ̇²/2, I_2D = γ̇²/4 (seed-004 note §2.9).
+  // Simple shear u_x = γ̇ y: ∇·u = 0, D':D' = γ̇²/2, I_2D = D':D'/2 = γ̇²/4 (seed 001 eq. 39).
   const std::array<std::array<double, 3>, 3> shear{{{0, 0, 0}, {2.0, 0, 0}, {0, 0, 0}}};
   const auto s = strain_rate_of(shear);
   CHECK(s.divergence == 0);
   CHECK(s.deviatoric_contraction == doctest::Approx(2.0).epsilon(1e-15));
-  // Seed 001 eq. 39 for D = [[1, .2, 0], [.2, −.5, .3], [0, .3, .1]] gives I_2D = 0.7 (note §3.8).
+  // Seed 001 eq. 39 for D = [[1, .2, 0], [.2, −.5, .3], [0, .3, .1]] gives I_2D = 0.7.
   const std::array<std::array<double, 3>, 3> d{{{1, 0.2, 0}, {0.2, -0.5, 0.3}, {0, 0.3, 0.1}}};
   const auto t = strain_rate_of(d);
   CHECK(t.divergence == doctest::Approx(0.6).epsilon(1e-15));
@@ -387,15 +391,15 @@ TEST_CASE("the checked entry point names the offending argument") {
     }
     return "";
   };
-  CHECK(message_of(0.3, 0.01, note_material).empty());
-  CHECK(message_of(-0.1, 0.01, note_material).find("'solid_fraction' = -0.1") != std::string::npos);
-  CHECK(message_of(1.0, 0.01, note_material).find("solid_fraction") != std::string::npos);
-  CHECK(message_of(std::nan(""), 0.01, note_material).find("solid_fraction") != std::string::npos);
-  CHECK(message_of(0.3, -1, note_material).find("'granular_temperature' = -1") != std::string::npos);
-  CHECK(message_of(0.3, std::numeric_limits<double>::infinity(), note_material).find("granular_temperature") !=
+  CHECK(message_of(0.3, 0.01, state_material).empty());
+  CHECK(message_of(-0.1, 0.01, state_material).find("'solid_fraction' = -0.1") != std::string::npos);
+  CHECK(message_of(1.0, 0.01, state_material).find("solid_fraction") != std::string::npos);
+  CHECK(message_of(std::nan(""), 0.01, state_material).find("solid_fraction") != std::string::npos);
+  CHECK(message_of(0.3, -1, state_material).find("'granular_temperature' = -1") != std::string::npos);
+  CHECK(message_of(0.3, std::numeric_limits<double>::infinity(), state_material).find("granular_temperature") !=
         std::string::npos);
   CHECK(message_of(0.3, 0.01, {0.0, 2500, 0.9}).find("material.diameter") != std::string::npos);
   CHECK(message_of(0.3, 0.01, {5e-4, -1, 0.9}).find("material.density") != std::string::npos);
   CHECK(message_of(0.3, 0.01, {5e-4, 2500, 1.1}).find("material.restitution") != std::string::npos);
-  CHECK(set.checked(0.3, 0.01, note_material).pressure == set(0.3, 0.01, note_material).pressure);
+  CHECK(set.checked(0.3, 0.01, state_material).pressure == set(0.3, 0.01, state_material).pressure);
 }

@@ -2,8 +2,9 @@
 // Srivastava–Sundaresan), gas–particle exchange of granular energy and the algebraic
 // granular temperature with strain and gas. References: the mpmath generator
 // tests/reference/ktgf_reference.py (ktgf_friction_reference.csv,
-// ktgf_exchange_reference.csv), seed 001 §12.4 and seed-004 note §3.8/§3.11/§3.12 numbers,
-// and exact identities.
+// ktgf_exchange_reference.csv), an independent double-precision evaluation of seed 001's and
+// seed 004's friction, exchange and algebraic-Θ formulas made when the seeds were read (each
+// quoted where used), and exact identities.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -75,7 +76,8 @@ TEST_CASE("frictional pressures and viscosities agree with the mpmath reference"
 }
 
 TEST_CASE("friction: published numbers, onset, the continuation near packing and Coulomb's shear stress") {
-  // Seed 001 §12.4 (Fr = 0.05, a = 2, b = 5, φ_min = 0.61, φ_max = 0.63).
+  // Seed 001 eq. 36 with its Table 1 values (Fr = 0.05, a = 2, b = 5, φ_min = 0.61, φ_max = 0.63),
+  // evaluated independently.
   const JohnsonJacksonPressure seed001{0.61, 0.63};
   CHECK(seed001(0.61) == 0.0);
   CHECK(seed001(0.615) == doctest::Approx(1646.090535).epsilon(1e-9));
@@ -89,20 +91,21 @@ TEST_CASE("friction: published numbers, onset, the continuation near packing and
   const double c = 0.62;
   CHECK(relative_difference(seed001(D1::variable(std::nextafter(c, 1.0), 0)).derivative[0],
                             seed001(D1::variable(c, 0)).derivative[0]) < 1e-12);
-  // Seed 004 (note §3.8): Fr = 0.005, φ_min = 0.55, φ_max = 0.64.
+  // Seed 004's friction slide: Fr = 0.005, φ_min = 0.55, φ_max = 0.64 (evaluated independently).
   const JohnsonJacksonPressure seed004{0.55, 0.64, 0.005};
   CHECK(seed004(0.56) == doctest::Approx(0.152588).epsilon(5e-6));
   CHECK(seed004(0.60) == doctest::Approx(122.070).epsilon(5e-6));
   CHECK(seed004(0.62) == doctest::Approx(7656.25).epsilon(5e-6));
   CHECK(seed004(0.63) == doctest::Approx(320000).epsilon(5e-6));
   // Schaeffer's viscosity in simple shear γ̇ (D':D' = γ̇²/2): μ = p sin φ_f/γ̇, i.e. the shear
-  // stress is p sin φ_f (note §3.8: 51.5891 at 0.60, γ̇ = 1, φ_f = 25°).
+  // stress is p sin φ_f (51.5891 at 0.60, γ̇ = 1, φ_f = 25°, evaluated independently).
   const SchaefferViscosity coulomb{radians(25)};
   for (double shear_rate : {1.0, 10.0}) {
     const StrainRate<double> shear{0.0, 0.5 * shear_rate * shear_rate};
     CHECK(coulomb(seed004(0.60), shear) == doctest::Approx(51.5891 / shear_rate).epsilon(5e-6));
   }
-  // Seed 001 §12.4 Schaeffer example: p = 68.2570812281924, φ_f = 30°, I_2D = 25.
+  // Seed 001 eq. 38 evaluated independently: p = 68.2570812281924 (Lun p_s at 0.62), φ_f = 30°,
+  // I_2D = 25.
   CHECK(SchaefferViscosity{radians(30)}(68.2570812281924, StrainRate<double>{0.0, 50.0}) ==
         doctest::Approx(3.4128540614096194).epsilon(1e-12));
   // At rest the floor keeps μ finite; below the onset everything is 0.
@@ -195,9 +198,9 @@ TEST_CASE("gas exchange and the algebraic granular temperature agree with the mp
   MESSAGE("exchange rows " << table.size() << ": worst value " << worst_value << ", derivative " << worst_derivative);
 }
 
-TEST_CASE("gas exchange and algebraic temperature: note numbers and identities") {
+TEST_CASE("gas exchange and algebraic temperature: independently evaluated numbers and identities") {
   const GranularMaterial<double> m{500e-6, 2500.0, 0.9};
-  // Note §3.11: the Ergun K of seed 001 eq. 41 (the library's Ergun in the pressure-gradient
+  // The Ergun K of seed 001 eq. 41 (the library's Ergun in the pressure-gradient
   // convention, which is FLUENT's K_gs) gives −3KΘ = −60.5571 at α_s = 0.3 (Θ = 0.01,
   // air 1.2 / 1.8e-5, slip 0.5 m/s, d = 500 µm).
   const double k_ergun = 150 * 0.09 * 1.8e-5 / (0.7 * 500e-6 * 500e-6) + 1.75 * 0.3 * 1.2 * 0.5 / 500e-6;
@@ -211,7 +214,7 @@ TEST_CASE("gas exchange and algebraic temperature: note numbers and identities")
             doctest::Approx(KochSanganiSource{}(phi, theta, 1.0, w, mu, m)).epsilon(1e-14));
       CHECK(std::isfinite(KochSanganiSource{}(phi, theta, 1.0, w, mu, m)));
     }
-  // Note §3.12: Θ with the Ergun sink, simple shear γ̇ = 1 and 10, Gidaspow μ, Lun γ.
+  // Θ with the Ergun sink, simple shear γ̇ = 1 and 10, Gidaspow μ, Lun γ (evaluated independently).
   const ConstitutiveSet ogawa{Ogawa{0.63}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}};
   const ConstitutiveSet cs{CarnahanStarling{}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}};
   const double k_055 = 150 * 0.3025 * 1.8e-5 / (0.45 * 500e-6 * 500e-6) + 1.75 * 0.55 * 1.2 * 0.5 / 500e-6;

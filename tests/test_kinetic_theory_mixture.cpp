@@ -1,7 +1,8 @@
 // Kinetic theory for several solids classes: the mixture radial distribution functions
 // (Lebowitz, Mansoori, modified Mansoori) and Syamlal's solid–solid drag. References: the
-// mpmath generator tests/reference/ktgf_reference.py (ktgf_mixture_reference.csv), the
-// seed-004 note's §3.9 numbers, and the one-class limits (exact identities).
+// mpmath generator tests/reference/ktgf_reference.py (ktgf_mixture_reference.csv), an
+// independent double-precision evaluation of seed 000's binary layers (Ch. 6) made when the
+// seeds were read, and the one-class limits (exact identities).
 #include <doctest/doctest.h>
 
 #include <array>
@@ -118,12 +119,13 @@ TEST_CASE("one-class limits: Lebowitz = Percus-Yevick, Mansoori = Carnahan-Starl
                   ModifiedMansoori{0.63}(std::span<const double>(whole), std::span<const double>(d), 0, 0)) < 1e-15);
       }
   }
-  // Seed-004 note §3.1/§3.9: Lebowitz with two equal halves at 0.3 is the PY value 2.34694.
+  // Lebowitz with two equal halves at 0.3 is the Percus–Yevick value 2.34694 (evaluated independently).
   CHECK(PercusYevick{}(0.3) == doctest::Approx(2.34694).epsilon(5e-6));
 }
 
-TEST_CASE("Syamlal solid-solid drag: the seed-004 note's seed-000 cases, and seed 000 eq. 6.15's factor pi") {
-  // Note §3.9: ρ = 2500, e = 0.97, C_f = 0.15, |Δv| = 0.1 m/s, Lebowitz g_12.
+TEST_CASE("Syamlal solid-solid drag: seed 000's binary layers, and seed 000 eq. 6.15's factor pi") {
+  // Seed 000 Ch. 6 layers, evaluated independently: ρ = 2500, e = 0.97, C_f = 0.15, |Δv| = 0.1 m/s,
+  // Lebowitz g_12.
   struct Case {
     double d1, d2, phi1, phi2, lebowitz, syamlal, seed000_printed;
   };

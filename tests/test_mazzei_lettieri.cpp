@@ -16,7 +16,8 @@ namespace {
 const Fluid<double> water{.density = 998.0, .viscosity = 1.0e-3};
 }
 
-TEST_CASE("Re*, φ and ψ_e reproduce seed 000 note §6.4's independently checked table") {
+TEST_CASE("Re*, φ and ψ_e reproduce a table evaluated independently from seed 000 Table 3.1") {
+  // An independent double-precision evaluation of Table 3.1 made when the thesis was read.
   struct Row {
     double eps, re, re_star, phi, psi;
   };
@@ -76,14 +77,16 @@ TEST_CASE("limits: ψ_e → 2.80 for Re → 0 and Re → ∞ (eqs. 3.68, 3.71), 
   // ψ_e at ε = 1 is the limit of the neighbouring values (0/0 in eq. 3.64).
   for (double re : {1e-3, 1.0, 100.0, 1e5})
     CHECK(ML::equivalent_exponent(1.0, re) == doctest::Approx(ML::equivalent_exponent(1.0 - 1e-7, re)).epsilon(1e-6));
-  // Thesis: the minimum over Re of ψ_e at ε = 0.4 is 1.9079 at Re ≈ 6.1 (note §6.4).
+  // The minimum over Re of ψ_e at ε = 0.4 is 1.9079 at Re ≈ 6.1 (the independent evaluation; the thesis
+  // says ψ_e drops "to values as low as 1.90" in the intermediate regime).
   double minimum = 10;
   for (double lg = -1; lg < 2; lg += 0.001)
     minimum = std::min(minimum, ML::equivalent_exponent(0.4, std::pow(10.0, lg)));
   CHECK(minimum == doctest::Approx(1.9079).epsilon(1e-4));
 }
 
-TEST_CASE("β at seed 000 Table 4.3 system 1, u = 5.28e-3 m/s equals the equilibrium β̂ (note §6.5)") {
+TEST_CASE("β at seed 000 Table 4.3 system 1, u = 5.28e-3 m/s equals the equilibrium β̂ of eq. 3.28") {
+  // β̂ = (ε/u_s)(1 − ε)(ρ_p − ρ_f) g at ε_R&Z = 0.6037180 (the independent evaluation's numbers).
   const DragState<double> s{.voidage = 0.6037180, .slip = 8.7458051e-3, .fluid = water, .diameter = 253e-6};
   CHECK(ML{}(s).classical() == doctest::Approx(7.9210226e5).epsilon(1e-6));
   CHECK(ML::effective_reynolds(0.6037180, 1.3331683) == doctest::Approx(8.5411396).epsilon(1e-6));

@@ -1,8 +1,9 @@
 // Settling and homogeneous expansion: Richardson–Zaki exponents, terminal velocities,
 // the equilibrium voidage of every drag law, minimum fluidization. Reference values come
-// from the independent mpmath generator (tests/reference/settling_reference.py), from the
-// values seed note 000 marks [checked], from seed 000 Table 4.4, from exact limits, and
-// from the identity Mazzei–Lettieri ≡ Richardson–Zaki.
+// from the independent mpmath generator (tests/reference/settling_reference.py), from an
+// independent double-precision evaluation of seed 000's formulas made when the thesis was read
+// (printed digits, half a unit), from seed 000 Table 4.4, from exact limits, and from the
+// identity Mazzei–Lettieri ≡ Richardson–Zaki.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -117,8 +118,8 @@ TEST_CASE("every settling quantity agrees with the independent mpmath reference 
 
 // ============================================================================ exponents
 
-TEST_CASE("eq. 3.24: the values seed note 000 marks checked, and the limits 4.8 / 2.4") {
-  // Tolerances: half a unit in the last printed digit.
+TEST_CASE("eq. 3.24: independently evaluated values, and the limits 4.8 / 2.4") {
+  // The independent evaluation of eq. 3.24; tolerances: half a unit in the last printed digit.
   CHECK(richardson_zaki_exponent_mazzei(1e-6) == doctest::Approx(4.79999).epsilon(1e-6));
   CHECK(richardson_zaki_exponent_mazzei(0.1) == doctest::Approx(4.727566).epsilon(2.5e-7));
   CHECK(richardson_zaki_exponent_mazzei(1.0) == doctest::Approx(4.442553191).epsilon(1e-10));
@@ -148,7 +149,7 @@ TEST_CASE("dn/dRe_t of eq. 3.24 equals a central difference and the dual-number 
     CHECK(dual.value == richardson_zaki_exponent_mazzei(re));
     CHECK(dual.derivative[0] == doctest::Approx(slope).epsilon(1e-13));
   }
-  // |Re_t N| <= 0.45, the maximum at 0.175 Re_t^¾ = 1 (note §6.3).
+  // |Re_t N| = 1.8 x/(1 + x)² <= 0.45 (eq. 3.103), the maximum at x = 0.175 Re_t^¾ = 1.
   const double re_peak = std::pow(1 / 0.175, 4.0 / 3.0);
   CHECK(re_peak * richardson_zaki_exponent_mazzei_derivative(re_peak) == doctest::Approx(-0.45).epsilon(1e-14));
   CHECK(richardson_zaki_exponent_mazzei_derivative(0.0) == -std::numeric_limits<double>::infinity());
@@ -239,17 +240,18 @@ TEST_CASE("Dallavalle terminal velocity: the seed's checked systems") {
     CHECK(reynolds == doctest::Approx(re_t).epsilon(tolerance));
     CHECK(richardson_zaki_exponent_mazzei(reynolds) == doctest::Approx(n).epsilon(tolerance));
   };
-  // Note §6.5 and §8.2: Table 4.3 systems 1–3 (system 3 at 5.21 mm).
+  // Table 4.3 systems 1–3 (system 3 at 5.21 mm: the printed 521 µm cannot reproduce Table 4.4), values of
+  // the independent evaluation.
   check(system_of(1).fluid, system_of(1).particles, 0.033827, 8.5411396, 3.6805, 2e-5);
   CHECK(terminal_reynolds(water, 253e-6, terminal_velocity_dallavalle(water, {2780.0, 253e-6})) ==
         doctest::Approx(8.5411396).epsilon(1e-8));
   CHECK(archimedes(water, {2780.0, 253e-6}) == doctest::Approx(282.5328).epsilon(2e-7));
   check(system_of(2).fluid, system_of(2).particles, 0.051804, 19.42, 3.3164, 2e-4);
   check(system_of(3).fluid, system_of(3).particles, 0.4120, 2157, 2.4426, 2e-4);
-  // Note §8.1: the gas example and the Richardson & Zaki (1954) liquid (ρ_f = 2170 as printed).
+  // §4.3.3: the gas example and the Richardson & Zaki (1954) liquid (ρ_f = 2170 as printed).
   check(air_example, fcc_example, 0.4467, 3.99, 4.006, 3e-4);
   check({2170.0, 1.61e-3}, {2620.0, 230e-6}, 6.034e-3, 1.87, 4.275, 3e-3);
-  // Note §8.6: the §4.6.3 stability system.
+  // The §4.6.3 stability system.
   check({1.19, 1.82e-5}, {2500.0, 71.5e-6}, 0.29866, 1.3962, 4.3595, 3e-5);
 }
 
@@ -361,12 +363,12 @@ TEST_CASE("gas example of seed 000 §4.3.3: ε_R&Z(5.77e-2) = 0.6000, h = 0.45 m
   CHECK(eps == doctest::Approx(0.6000).epsilon(1e-4));
   CHECK(bed_height(0.30, 0.4, eps) == doctest::Approx(0.450).epsilon(1e-4));
   CHECK(minimum_fluidization_velocity_ergun(air_example, fcc_example, 0.4) == doctest::Approx(8.731e-3).epsilon(1e-4));
-  // The Richardson & Zaki (1954) liquid of §4.3.3 (note §8.1): ε_R&Z(4.70e-4) = 0.5504, h = 0.400 m.
+  // The Richardson & Zaki (1954) liquid of §4.3.3 (eq. 4.4): ε_R&Z(4.70e-4) = 0.5504, h = 0.400 m.
   const double eps_rz =
       *richardson_zaki_equilibrium_voidage(4.70e-4, Fluid<double>{2170.0, 1.61e-3}, Particles<double>{2620.0, 230e-6});
   CHECK(eps_rz == doctest::Approx(0.5504).epsilon(2e-4));
   CHECK(bed_height(0.30, 0.4, eps_rz) == doctest::Approx(0.400).epsilon(1e-3));
-  // Note §8.6: R–Z at 1.55 cm/s gives 0.507 for the §4.6.3 system.
+  // §4.6.3: R–Z at 1.55 cm/s gives 0.507 for its stability system.
   CHECK(
       *richardson_zaki_equilibrium_voidage(1.55e-2, Fluid<double>{1.19, 1.82e-5}, Particles<double>{2500.0, 71.5e-6}) ==
       doctest::Approx(0.507).epsilon(1e-3));
@@ -488,14 +490,16 @@ TEST_CASE("below minimum fluidization the law's voidage is below ε_mf, Ergun at
         doctest::Approx(archimedes(water, sand)).epsilon(1e-10));
 }
 
-TEST_CASE("voidage ratio ε_law/ε_R&Z (seed 000 Figs 3.1–3.3): the values seed note 000 §9 marks checked") {
+TEST_CASE("voidage ratio ε_law/ε_R&Z (seed 000 Figs 3.1–3.3): independently evaluated values") {
+  // Figs 3.1–3.3 give these ratios only as curves; the values come from an independent
+  // double-precision evaluation of their construction (§3.4.4.1) made when the thesis was read.
   const std::vector<double> re{1e-3, 1.0, 10.0, 100.0, 1e3, 1e5};
   const auto check = [&](const auto& law, double eps_rz, const std::vector<double>& expected) {
     for (std::size_t i = 0; i < re.size(); ++i) {
       INFO("eps_RZ = " << eps_rz << ", Re = " << re[i]);
       const auto ratio = voidage_ratio(law, re[i], eps_rz);
       if (expected[i] * eps_rz >= 1.0) {
-        CHECK(!ratio.has_value());  // the note's formula gives ε > 1: no bed
+        CHECK(!ratio.has_value());  // the construction gives ε > 1: no bed
       } else {
         REQUIRE(ratio.has_value());
         CHECK(*ratio == doctest::Approx(expected[i]).epsilon(6e-5));
@@ -517,7 +521,7 @@ TEST_CASE("equivalent exponent ψ_e (eq. 3.64)") {
     for (double re : {0.0, 0.5, 80.0, 5e3})
       CHECK(equivalent_exponent<drag::SchillerNaumannCoefficient>(wen_yu, eps, re) ==
             doctest::Approx(2.70).epsilon(1e-13));
-  // Mazzei–Lettieri against Dallavalle's C_D: seed note §6.4 table [checked].
+  // Mazzei–Lettieri against Dallavalle's C_D: ψ_e of the independent evaluation of Table 3.1.
   const drag::MazzeiLettieri ml;
   CHECK(equivalent_exponent(ml, 0.40, 1.0) == doctest::Approx(2.042413).epsilon(1e-6));
   CHECK(equivalent_exponent(ml, 0.50, 0.01) == doctest::Approx(2.805829).epsilon(1e-6));

@@ -78,7 +78,7 @@ TEST_CASE("terminal data, roots and maxima of S_f, S_j, S_r agree with the mpmat
 }
 
 TEST_CASE("seed 000 Table 4.6: the printed minimum bubbling voidages of the three models, within 0.002") {
-  // Gas properties (not printed in the thesis; note seed000-closures §8.5): air ρ_f = 1.205,
+  // Gas properties are not printed in the thesis; these reproduce Table 4.6: air ρ_f = 1.205,
   // μ_f = 1.81e-5 for powders 1–10 and 13; N₂ ρ_f = 1.165, μ_f = 1.76e-5 for 11, 12, 14, 15;
   // N₂ as an ideal gas with Sutherland's viscosity above 20 °C. Powder 10 with Jean–Fan and
   // Mazzei–Lettieri has no root: the printed 0.896/0.902 are where S peaks (below zero).
@@ -115,7 +115,8 @@ TEST_CASE("seed 000 section 4.6.3 system: F-G at 0.403 and 0.566 cm/s, M-L at 0.
   const auto j = minimum_bubbling_point(ElasticModel::jean_fan, s);
   CHECK(*j.bubbling_velocity == doctest::Approx(0.01000).epsilon(1e-3));
   // With the factor C in H (Table 4.6 needs it) Mazzei–Lettieri gives 0.448 and 0.900 cm/s; the
-  // thesis's text quotes ≈ 0.460 and 1.00 cm/s, which C = 1 would give (note §8.6).
+  // thesis's text quotes ≈ 0.460 and 1.00 cm/s, which C = 1 would give (0.4608 and 1.02 cm/s,
+  // asserted by tests/reference/stability_reference.py).
   const auto m = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s);
   CHECK(*m.bubbling_voidage == doctest::Approx(0.4479).epsilon(2e-4));
   CHECK(*m.bubbling_velocity == doctest::Approx(0.00900).epsilon(1e-3));
