@@ -8,7 +8,11 @@
 //   capacity N = n and at capacity 8; invert_eigen; realizability; invert_adaptive (with
 //   Gauss–Radau); gauss_radau; recurrence; correct_moments and mcgraw_correct;
 //   sieve_moment_checked; invert_batched against the per-cell invert; and the exact power-of-two
-//   unit invariance the headers promise.
+//   unit invariance the headers promise. Counts are fuzzed as well as values (count_checks): every
+//   entry point that takes a span, a count or a sized rule, at capacities 3 and 8, is given any
+//   count from 0 to 2N + 3 (in a heap block of exactly that size, so that AddressSanitizer sees a
+//   read one past it), spans of mismatched lengths and rules of any size, and must answer with its
+//   documented status or empty result.
 // The contract of an inversion (inversion.hpp, realizability.hpp): "never NaN without a status,
 // never an exception or abort": ok gives all n nodes, reduced fewer, any other status none; nodes
 // ascending and finite, weights finite and >= 0, and the Gauss rule reproduces m_0 and m_1.
@@ -749,6 +753,192 @@ void exact_capacity(Input& in, const Problem<T>& p, std::span<const T> m) {
   batched_checks<T, N>(in, m, p.support);
 }
 
+// ------------------------------------------------------------------------------------- counts
+
+// Whether every entry of a span is NaN (what the span-filling helpers leave on a size mismatch).
+template <class T>
+bool all_nan(std::span<const T> values) {
+  return std::all_of(values.begin(), values.end(), [](const T& x) { return std::isnan(x); });
+}
+
+// `count` values in a heap block of exactly that size, so that AddressSanitizer reports a read
+// one element beyond the span (a stack array with room to spare would not).
+template <class T>
+std::vector<T> exactly(std::span<const T> pool, std::size_t count) {
+  std::vector<T> out(count);
+  for (std::size_t k = 0; k < count; ++k) out[k] = pool[k % pool.size()];
+  return out;
+}
+
+// Every span-, count- or size-taking entry point at capacity N, given `count` moments of the
+// problem's set (any count 0 … 2N + 3, so that too few, odd and too many all occur): a count an
+// entry point does not take is its documented status or empty result (inversion.hpp,
+// realizability.hpp, adaptive.hpp, correction.hpp, moment_set.hpp, batched.hpp), never an access
+// beyond a span (ASan), an abort or a moment silently dropped.
+template <class T, int N>
+void count_checks(Input& in, const Problem<T>& p) {
+  using detail::count_within;
+  using detail::Parity;
+  const std::span<const T> pool(p.moments.data(), p.moments.size());
+  const std::size_t count = std::size_t(in.integer(0, 2 * N + 3));
+  const std::vector<T> m = exactly(pool, count);
+  const std::span<const T> set(m);
+
+  const bool even_ok = count_within(count, 2, 2 * N, Parity::even);
+  for (const InversionResult<T, N>& r : {invert<T, N>(set, p.options), invert_eigen<T, N>(set, p.options)}) {
+    if (even_ok)
+      check_inversion("invert (counts)", r, set, p.options);
+    else
+      FUZZ_CHECK(r.status == InversionStatus::invalid_input && r.quadrature.size == 0 && r.realizable_nodes == 0,
+                 "invert<%d>: %zu moments gave status %s with %d nodes (invalid_input, none, expected); moments %s", N,
+                 count, name(r.status), r.quadrature.size, text(set).c_str());
+  }
+  for (const Recurrence<T, N>& r : {recurrence<T, N>(set), recurrence<T, N>(set, RecurrenceAlgorithm::product_difference),
+                                    wheeler_unscaled<T, N>(set), product_difference_unscaled<T, N>(set)})
+    FUZZ_CHECK(even_ok ? r.size >= 0 && r.size <= int(count / 2) : r.size == 0,
+               "recurrence<%d>: %zu moments gave %d levels; moments %s", N, count, r.size, text(set).c_str());
+
+  const RealizabilityReport<T, N> report = realizability<T, N>(set, p.support);
+  if (count_within(count, 1, 2 * N))
+    FUZZ_CHECK(report.realizable_moments <= int(count) && report.hankel_count <= int(count) &&
+                   report.zeta_count < int(std::max<std::size_t>(count, 1)),
+               "realizability<%d>: %zu moments, %d realizable, %d Hankel, %d zeta; moments %s", N, count,
+               report.realizable_moments, report.hankel_count, report.zeta_count, text(set).c_str());
+  else
+    FUZZ_CHECK(report.status == InversionStatus::invalid_input && report.realizable_moments == 0 &&
+                   report.hankel_count == 0 && report.zeta_count == 0,
+               "realizability<%d>: %zu moments gave status %s; moments %s", N, count, name(report.status), text(set).c_str());
+
+  AdaptiveOptions<T> adaptive;
+  adaptive.inversion = p.options;
+  adaptive.radau = in.boolean();
+  const AdaptiveInversionResult<T, N> a = invert_adaptive<T, N>(set, adaptive);
+  FUZZ_CHECK(count_within(count, 2, 2 * N) ? a.moments_used <= int(count) && a.quadrature.size <= N
+                                           : a.status == InversionStatus::invalid_input && a.quadrature.size == 0,
+             "invert_adaptive<%d>: %zu moments gave status %s, %d nodes, %d used; moments %s", N, count, name(a.status),
+             a.quadrature.size, a.moments_used, text(set).c_str());
+  const InversionResult<T, N> radau = gauss_radau<T, N>(set, T(0), p.options);
+  FUZZ_CHECK(count_within(count, 3, 2 * N - 1, Parity::odd)
+                 ? radau.status != InversionStatus::reduced
+                 : radau.status == InversionStatus::invalid_input && radau.quadrature.size == 0,
+             "gauss_radau<%d>: %zu moments gave status %s with %d nodes; moments %s", N, count, name(radau.status),
+             radau.quadrature.size, text(set).c_str());
+
+  for (const CorrectionResult<T, N>& c : {correct_moments<T, N>(set), mcgraw_correct<T, N>(set)})
+    FUZZ_CHECK(count_within(count, 1, 2 * N) ? c.size == int(count) : c.status == CorrectionStatus::failed && c.size == 0,
+               "correct_moments<%d>: %zu moments gave status %s, size %d; moments %s", N, count, name(c.status), c.size,
+               text(set).c_str());
+
+  // The span helpers, with output spans of any length.
+  const MomentScaling scaling = scaling_of(set);
+  std::vector<T> out(std::size_t(in.integer(0, 2 * N + 3)), T(-7));
+  const bool scaled = scale_moments(set, scaling, std::span<T>(out));
+  FUZZ_CHECK(scaled == (out.size() >= count) && (scaled || all_nan(std::span<const T>(out))),
+             "scale_moments: %zu moments into %zu entries returned %d", count, out.size(), int(scaled));
+  if (count < 2) FUZZ_CHECK(std::isnan(d43(set)), "d43 of %zu moments is not NaN", count);
+  if (count < 3) FUZZ_CHECK(std::isnan(variance(set)), "variance of %zu moments is not NaN", count);
+  if (count < 1) FUZZ_CHECK(std::isnan(solids_volume_fraction(set)), "solids_volume_fraction of no moment is not NaN");
+  const bool converted = vdf_from_ndf_moments(set, std::span<T>(out));
+  FUZZ_CHECK(converted == (count >= out.size()) && (converted || all_nan(std::span<const T>(out))),
+             "vdf_from_ndf_moments: %zu into %zu returned %d", count, out.size(), int(converted));
+  const bool inverse = ndf_from_vdf_moments(std::span<const T>(out).first(std::min(out.size(), count)), std::span<T>(out));
+  FUZZ_CHECK(inverse, "ndf_from_vdf_moments refused an output as long as its input");
+
+  // Quadratures from nodes and weights of any two lengths, and from a Quadrature of any size.
+  const std::vector<T> nodes = exactly(pool, std::size_t(in.integer(0, N + 1)));
+  const std::vector<T> weights = exactly(pool, in.boolean() ? nodes.size() : std::size_t(in.integer(0, N + 1)));
+  const bool summed = moments_from_quadrature<T>(nodes, weights, std::span<T>(out));
+  FUZZ_CHECK(summed == (nodes.size() == weights.size()) && (summed || all_nan(std::span<const T>(out))),
+             "moments_from_quadrature: %zu nodes, %zu weights returned %d", nodes.size(), weights.size(), int(summed));
+  Quadrature<T, N> q;
+  q.size = in.integer(-2, N + 2);
+  for (int i = 0; i < N; ++i) {
+    q.nodes[std::size_t(i)] = pool[std::size_t(i) % pool.size()];
+    q.weights[std::size_t(i)] = pool[std::size_t(i + 1) % pool.size()];
+  }
+  const bool in_storage = q.size >= 0 && q.size <= N;
+  FUZZ_CHECK(moments_from_quadrature(q, std::span<T>(out)) == in_storage, "moments_from_quadrature: size %d", q.size);
+  if (!in_storage)
+    FUZZ_CHECK(std::isnan(quadrature_moment(q, 1)) && std::isnan(d32(q)) && std::isnan(d10(q)),
+               "quadrature_moment of a quadrature of size %d is not NaN", q.size);
+
+  // Recurrences of any size: no rule for a size outside 0 … N (and the solvers' own limits).
+  Recurrence<T, N> r;
+  r.size = in.integer(-2, N + 2);
+  for (int k = 0; k < N; ++k) {
+    r.alpha[std::size_t(k)] = pool[std::size_t(2 * k) % pool.size()];
+    r.beta[std::size_t(k)] = pool[std::size_t(2 * k + 1) % pool.size()];
+  }
+  const bool valid_size = r.size >= 0 && r.size <= N;
+  (void)stieltjes_coefficients(r);
+  Recurrence<T, N> unscaled = r;
+  unscale(unscaled, scaling);
+  FUZZ_CHECK(valid_size || std::memcmp(&unscaled, &r, sizeof r) == 0, "unscale changed a recurrence of size %d", r.size);
+  FUZZ_CHECK(gauss_closed_form(r).size == (valid_size && r.size <= 2 ? r.size : 0), "gauss_closed_form: size %d", r.size);
+  Quadrature<T, N> solved;
+  const bool solved_by_ql = gauss_golub_welsch(r, solved);
+  FUZZ_CHECK(valid_size || (!solved_by_ql && solved.size == 0), "gauss_golub_welsch accepted size %d", r.size);
+  FUZZ_CHECK(valid_size || (!gauss_eigen_tridiagonal(r, solved) && solved.size == 0),
+             "gauss_eigen_tridiagonal accepted size %d", r.size);
+  if constexpr (N >= 3)
+    FUZZ_CHECK(r.size == 3 || gauss_three_nodes(r).size == 0, "gauss_three_nodes: a rule from size %d", r.size);
+
+  // Sieve analyses whose edges are any count (one more than the fractions, or not).
+  const std::size_t bins = std::size_t(in.integer(0, 4));
+  const std::vector<T> fractions = exactly(pool, bins);
+  const std::vector<T> edges = exactly(pool, in.boolean() ? bins + 1 : std::size_t(in.integer(0, 6)));
+  const SieveAnalysis<T> psd{edges, fractions, in.boolean() ? SizeBasis::number : SizeBasis::volume};
+  const bool bins_match = bins >= 1 && edges.size() == bins + 1;
+  const T voidage = T(in.uniform(0.3, 1));
+  const bool filled = sieve_moments(psd, voidage, std::span<T>(out));
+  FUZZ_CHECK(filled == bins_match, "sieve_moments: %zu edges, %zu fractions returned %d", edges.size(), bins, int(filled));
+  if (!bins_match) {
+    FUZZ_CHECK(all_nan(std::span<const T>(out)) && std::isnan(geldart_sauter_diameter(psd)) && std::isnan(d32(psd)) &&
+                   std::isnan(d10(psd)),
+               "sieve helpers: %zu edges, %zu fractions gave a number", edges.size(), bins);
+    bool thrown = false;
+    try {
+      (void)sieve_moment_checked(psd, voidage, 1);
+    } catch (const std::domain_error&) {
+      thrown = true;
+    }
+    FUZZ_CHECK(thrown, "sieve_moment_checked accepted %zu edges for %zu fractions", edges.size(), bins);
+  }
+
+  // A batch whose spans may differ in length: false and nothing written, or every cell inverted.
+  const std::size_t cells = std::size_t(in.integer(0, 20));
+  const auto length = [&] { return in.byte() % 8 == 0 ? std::size_t(in.integer(0, 20)) : cells; };
+  std::vector<std::vector<T>> fields(2 * N), x(N), w(N);
+  MomentBatch<T, N> batch;
+  QuadratureBatch<T, N> result;
+  bool equal = true;
+  for (int k = 0; k < 2 * N; ++k) {
+    fields[std::size_t(k)] = exactly(pool.subspan(std::size_t(k) % pool.size()), length());
+    batch.moments[std::size_t(k)] = fields[std::size_t(k)];
+    equal = equal && fields[std::size_t(k)].size() == batch.cells();
+  }
+  for (int i = 0; i < N; ++i) {
+    x[std::size_t(i)].assign(length(), T(-7));
+    w[std::size_t(i)].assign(length(), T(-7));
+    result.nodes[std::size_t(i)] = x[std::size_t(i)];
+    result.weights[std::size_t(i)] = w[std::size_t(i)];
+    equal = equal && x[std::size_t(i)].size() == batch.cells() && w[std::size_t(i)].size() == batch.cells();
+  }
+  std::vector<int> sizes(length(), -7);
+  std::vector<InversionStatus> status(length(), InversionStatus(-1));
+  result.sizes = sizes;
+  result.status = status;
+  equal = equal && sizes.size() == batch.cells() && status.size() == batch.cells();
+  const bool batched = invert_batched(batch, result, p.support);
+  FUZZ_CHECK(batched == equal, "invert_batched<%d>: returned %d for spans %s of equal length", N, int(batched),
+             equal ? "all" : "not all");
+  if (!batched) {
+    bool untouched = std::all_of(sizes.begin(), sizes.end(), [](int s) { return s == -7; });
+    for (const auto& v : x) untouched = untouched && std::all_of(v.begin(), v.end(), [](const T& e) { return e == T(-7); });
+    FUZZ_CHECK(untouched, "invert_batched<%d>: refused the batch but wrote into it", N);
+  }
+}
+
 template <class T>
 void run(Input& in) {
   const Problem<T> p = decode<T>(in);
@@ -800,6 +990,8 @@ void run(Input& in) {
       exact_capacity<T, 8>(in, p, m);
       break;
   }
+  count_checks<T, 3>(in, p);
+  count_checks<T, kCapacity>(in, p);
 }
 
 }  // namespace

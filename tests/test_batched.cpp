@@ -303,7 +303,24 @@ TEST_CASE("batched: every tail length, and an empty batch") {
                                       Support::positive_half_line);
 }
 
-TEST_CASE("batched on the seeds' references: 3 atoms exactly (note §7.1), the 4-class mixture in µm and m (§7.2)") {
+TEST_CASE("batched = invert bit for bit where a weight is subnormal in scaled units (float, found by fuzz/)") {
+  // m_0 = (1 − 2^-24) 2^127, the largest float below 2^127: invert() scales by the nearest power
+  // of two, 2^127, whose inverse is not a normal float, and so takes the exact ldexp path; the
+  // lanes took the floor, 2^126. The weight 1 of the node at 1/4 is 2^-127 m_0: subnormal in the
+  // scaled units of one path and not of the other, so the two rounded it differently
+  // (1.0000001 against 1.0000002). The lanes now take scaling_of's powers of two.
+  const std::vector<Cell<float, 2>> cells{{1.7014117331926443e+38f, 0.0f, 0.0625f, 0.015624999068677425f}};
+  const BatchResult<float, 2> batched = run_batched<float, 2>(cells, Support::real_line);
+  const InversionResult<float, 2> single = invert<2>(cells[0], {.support = Support::real_line});
+  REQUIRE(single.status == InversionStatus::ok);
+  CHECK(batched.status[0] == single.status);
+  for (int i = 0; i < 2; ++i) {
+    CHECK(batched.nodes[0][i] == single.quadrature.nodes[i]);
+    CHECK(batched.weights[0][i] == single.quadrature.weights[i]);
+  }
+}
+
+TEST_CASE("batched on the seeds' references: 3 atoms exactly, the 4-class mixture of seed 000 Table 6.4 in µm and m") {
   const std::vector<Cell<double, 3>> atoms{{1, 2.7, 9.7, 41.7, 195.7, 953.7}};
   const BatchResult<double, 3> a = run_batched<double, 3>(atoms, Support::positive_half_line);
   REQUIRE(a.status[0] == InversionStatus::ok);
@@ -312,7 +329,8 @@ TEST_CASE("batched on the seeds' references: 3 atoms exactly (note §7.1), the 4
     CHECK(a.nodes[0][i] == doctest::Approx(x[i]).epsilon(5e-13));
     CHECK(a.weights[0][i] == doctest::Approx(w[i]).epsilon(5e-13));
   }
-  // ν = 3 rule of the mixture (75, 0.131), (103, 0.169), (240, 0.190), (355, 0.110) µm.
+  // ν = 3 rule of the mixture (75, 0.131), (103, 0.169), (240, 0.190), (355, 0.110) µm, to the 12
+  // digits moments_reference.py checks at 60 digits (case four_class).
   const double node3[] = {86.6269876824, 230.036035372, 352.171559157};
   const double weight3[] = {0.283741111103, 0.197117292254, 0.119141596643};
   for (const long double unit : {1.0L, 1e-6L}) {
@@ -411,7 +429,7 @@ TEST_CASE("three-node solver = QL on random Jacobi matrices, and lanes = cells")
   }
 }
 
-TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on 0 to 1 from m_k = 1/(k+1) (anchors note §9)") {
+TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on 0 to 1 from m_k = 1/(k+1) (the exact rule, checked by moments_reference.py)") {
   std::array<double, 10> m{};
   for (int k = 0; k < 10; ++k) m[k] = 1.0 / (k + 1);
   const double x[] = {0.046910077030668004, 0.23076534494715845, 0.5, 0.76923465505284155, 0.953089922969332};
@@ -422,7 +440,8 @@ TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on 0 to 1 from m_k = 1/(k+1) (a
     REQUIRE(e.status == InversionStatus::ok);
     for (int i = 0; i < 5; ++i) {
       INFO("node " << i);
-      // The moments → rule map loses ~1e-10 here (anchors note §5.2); the two eigen-solvers,
+      // The moments → rule map loses ~1e-10 here (its condition number grows like ~34^n on 0 to 1,
+      // Gautschi (2004), Orthogonal Polynomials, §2.1); the two eigen-solvers,
       // given the same recurrence, agree to rounding.
       CHECK(e.quadrature.nodes[i] == doctest::Approx(x[i]).epsilon(2e-10));
       CHECK(e.quadrature.weights[i] == doctest::Approx(w[i]).epsilon(2e-10));
@@ -432,7 +451,8 @@ TEST_CASE("Eigen backend: Gauss–Legendre N = 5 on 0 to 1 from m_k = 1/(k+1) (a
   }
 }
 
-TEST_CASE("Eigen backend: the 4-class mixture of seed note §7.2 with 2, 3, 4 nodes, in µm and in m") {
+TEST_CASE("Eigen backend: the 4-class mixture of seed 000 Table 6.4 with 2, 3, 4 nodes, in µm and in m") {
+  // Rules to 12 digits, which moments_reference.py checks at 60 digits (case four_class).
   const double node2[] = {101.744236314, 313.820272581}, weight2[] = {0.360296075378, 0.239703924622};
   const double node3[] = {86.6269876824, 230.036035372, 352.171559157};
   const double weight3[] = {0.283741111103, 0.197117292254, 0.119141596643};
@@ -456,7 +476,7 @@ TEST_CASE("Eigen backend: the 4-class mixture of seed note §7.2 with 2, 3, 4 no
     };
     check(2, node2, weight2, 1e-11);  // 12 printed digits
     check(3, node3, weight3, 1e-11);
-    check(4, node4, weight4, 5e-11);  // the atoms; the note measured ~5e-12 in double
+    check(4, node4, weight4, 5e-11);  // the atoms themselves
   }
 }
 

@@ -135,10 +135,12 @@ struct LaneScales {
 };
 
 // The scales of scaling_of (recurrence.hpp): weight 2^a ≈ m_0, length 2^b ≈ max(|m_1|/m_0,
-// √(m_2/m_0)) (m_2 given: `second`), read from the exponent fields; here by integer operations
-// on the fields (floor instead of nearest: any power of two near the scale serves, every step
-// of the pipeline commuting exactly with it), other types per cell by scaling_of. The guards
-// require m_0, the scales and their inverses to be normal numbers.
+// √(m_2/m_0)) (m_2 given: `second`), the same powers of two as scaling_of's (the nearest ones,
+// read from the exponent fields and the leading fraction bits), so that a cell gives the same
+// bits in the lanes as in invert() also where an intermediate is subnormal in scaled units (a
+// weight below 2^−126 m_0 in float: with the floor of the exponent the two paths rounded it
+// differently, found by fuzz/); other types per cell by scaling_of. The guards require m_0, the
+// scales and their inverses to be normal numbers.
 template <class V>
 LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<V>& guards) {
   using T = typename V::Scalar;
@@ -149,13 +151,19 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<
     constexpr int shift = std::numeric_limits<T>::digits - 1;
     constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
     constexpr int none = -4 * bias;  // no scale from this moment (0 or subnormal)
-    const auto field = [](T x) { return int((std::bit_cast<bits>(x) >> shift) & bits(2 * bias + 1)); };
+    // The biased exponent of scaling_of's power of two nearest |x|; 0 for a zero or subnormal x,
+    // which has no exponent field to read.
+    const auto exponent = [](T x) {
+      const int field = int((std::bit_cast<bits>(x) >> shift) & bits(2 * bias + 1));
+      using std::abs;
+      return field > 0 ? nearest_power_of_two_exponent(abs(x)) + bias : 0;
+    };
     // 2^e, or 0 where 2^e is not a normal number (the guards reject the cell then).
     const auto power = [](int e) {
       return e >= 1 - bias && e <= bias ? std::bit_cast<T>(bits(e + bias) << shift) : T(0);
     };
     for (int i = 0; i < L; ++i) {
-      const int e0 = field(m0[i]), e1 = field(m1[i]), e2 = second ? field((*second)[i]) : 0;
+      const int e0 = exponent(m0[i]), e1 = exponent(m1[i]), e2 = second ? exponent((*second)[i]) : 0;
       const bool positive_second = second && (*second)[i] > T(0);
       const int from_mean = e1 > 0 ? e1 - e0 : none;
       const int from_second = e2 > 0 && positive_second ? (e2 - e0 + 1) >> 1 : none;
