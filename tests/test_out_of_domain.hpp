@@ -1,7 +1,8 @@
 // Test helper for the out-of-domain tests (tests/test_out_of_domain_*.cpp): every checked
 // entry point is described once, as its arguments (name in the message, a valid value, the
 // out-of-domain values, the valid boundary values) and a call on a flat list of values, and
-// check_entry_point tries every argument with every bad value.
+// check_entry_point tries every argument with every bad value, in the scalar type T (double by
+// default; every value below is exact in float, so the messages read the same in each type).
 #pragma once
 
 #include <doctest/doctest.h>
@@ -51,7 +52,10 @@ struct Argument {
   std::vector<double> edges = {};  // valid boundary values (ε = 1, zero slip, …): accepted, finite result
 };
 
-using Values = std::vector<double>;
+// The arguments' values, in the order of the entry point's `arguments`, in the scalar type T.
+template <class T>
+using ValuesOf = std::vector<T>;
+using Values = ValuesOf<double>;
 
 // `head` followed by `tail`: the arguments of an entry point assembled from shared groups.
 inline std::vector<Argument> concatenated(std::vector<Argument> head, const std::vector<Argument>& tail) {
@@ -60,33 +64,39 @@ inline std::vector<Argument> concatenated(std::vector<Argument> head, const std:
 }
 
 // A fluid from values[at], values[at + 1] (ρ_f, μ_f) and particles from the next two (ρ_p, d).
-inline Fluid<double> fluid_of(const Values& values, std::size_t at) { return {values[at], values[at + 1]}; }
-inline Particles<double> particles_of(const Values& values, std::size_t at) { return {values[at + 2], values[at + 3]}; }
+template <class T>
+Fluid<T> fluid_of(const ValuesOf<T>& values, std::size_t at) {
+  return {values[at], values[at + 1]};
+}
+template <class T>
+Particles<T> particles_of(const ValuesOf<T>& values, std::size_t at) {
+  return {values[at + 2], values[at + 3]};
+}
 
 // With every argument valid, and with each edge value in turn, the call returns a finite
 // value; with each invalid value in turn it throws std::domain_error whose message contains
-// "'<name>' = <value>". `call` maps the values (in the order of `arguments`) to a number.
-template <class Call>
+// "'<name>' = <value>". `call` maps the values (in the order of `arguments`, in T) to a number.
+template <class T = double, class Call>
 void check_entry_point(const std::string& label, const std::vector<Argument>& arguments, const Call& call) {
   INFO("entry point: ", label);
-  Values valid;
-  for (const Argument& a : arguments) valid.push_back(a.valid);
-  double result = nan;
+  ValuesOf<T> valid;
+  for (const Argument& a : arguments) valid.push_back(T(a.valid));
+  T result = std::numeric_limits<T>::quiet_NaN();
   CHECK_NOTHROW(result = call(valid));
   CHECK(std::isfinite(result));
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     for (const Bad& bad : arguments[i].invalid) {
-      Values values = valid;
-      values[i] = bad.value;
+      ValuesOf<T> values = valid;
+      values[i] = T(bad.value);
       const std::string expected = "'" + arguments[i].name + "' = " + bad.shown;
       INFO("expected in the message: ", expected);
       CHECK_THROWS_WITH_AS(call(values), doctest::Contains(expected.c_str()), std::domain_error);
     }
     for (const double edge : arguments[i].edges) {
-      Values values = valid;
-      values[i] = edge;
+      ValuesOf<T> values = valid;
+      values[i] = T(edge);
       INFO("valid edge of ", arguments[i].name, ": ", edge);
-      double at_edge = nan;
+      T at_edge = std::numeric_limits<T>::quiet_NaN();
       CHECK_NOTHROW(at_edge = call(values));
       CHECK(std::isfinite(at_edge));
     }

@@ -1,7 +1,8 @@
 // Out-of-domain input for every checked entry point of drag/ and settling/: zero and negative
 // sizes, densities and viscosities, ε outside (0, 1], NaN and ±∞ in each argument in turn
 // must throw std::domain_error naming the argument and the value; the valid boundary values
-// (ε = 1, zero slip, Re = 0) must not, and must give finite results.
+// (ε = 1, zero slip, Re = 0) must not, and must give finite results. In float, double and long
+// double.
 #include <doctest/doctest.h>
 
 #include <array>
@@ -11,6 +12,7 @@
 #include "fluidbed/drag/any_drag_law.hpp"
 #include "fluidbed/settling.hpp"
 #include "test_out_of_domain.hpp"
+#include "test_scalar_types.hpp"
 
 namespace {
 
@@ -32,39 +34,43 @@ const std::vector<Argument> drag_state{
     {"fluid.viscosity", 1.8e-5, not_positive}, {"diameter", 1e-4, not_positive},
 };
 
-drag::DragState<double> drag_state_of(const Values& v) { return {v[0], v[1], {v[2], v[3]}, v[4]}; }
+template <class T>
+drag::DragState<T> drag_state_of(const ValuesOf<T>& v) {
+  return {v[0], v[1], {v[2], v[3]}, v[4]};
+}
 
 }  // namespace
 
-TEST_CASE("out of domain: every drag law, value and derivatives, by type and through AnyDragLaw") {
+TEST_CASE_TEMPLATE("out of domain: every drag law, value and derivatives, by type and through AnyDragLaw", T,
+                   FLUIDBED_SCALAR_TYPES) {
   for (const drag::AnyDragLaw& any : drag::all_drag_laws) {
     const std::string name(drag::name_of(any));
     std::visit(
         [&](const auto& law) {
-          check_entry_point(name + ".checked", drag_state,
-                            [&](const Values& v) { return law.checked(drag_state_of(v)).classical(); });
-          check_entry_point(name + ".checked_with_derivatives", drag_state, [&](const Values& v) {
+          check_entry_point<T>(name + ".checked", drag_state,
+                               [&](const ValuesOf<T>& v) { return law.checked(drag_state_of(v)).classical(); });
+          check_entry_point<T>(name + ".checked_with_derivatives", drag_state, [&](const ValuesOf<T>& v) {
             const auto d = law.checked_with_derivatives(drag_state_of(v));
             return d.classical().value + d.pressure_gradient().d_voidage +
                    d.force_slip_derivative(drag::Buoyancy::classical);
           });
         },
         any);
-    check_entry_point("evaluate_checked " + name, drag_state, [&](const Values& v) {
+    check_entry_point<T>("evaluate_checked " + name, drag_state, [&](const ValuesOf<T>& v) {
       return drag::evaluate_checked(any, drag_state_of(v)).pressure_gradient();
     });
-    check_entry_point("evaluate_with_derivatives_checked " + name, drag_state, [&](const Values& v) {
+    check_entry_point<T>("evaluate_with_derivatives_checked " + name, drag_state, [&](const ValuesOf<T>& v) {
       return drag::evaluate_with_derivatives_checked(any, drag_state_of(v)).pressure_gradient().value;
     });
     // ε = 1 and zero slip together: β = 0, ∂(βw)/∂w finite.
-    const drag::DragState<double> clear{1.0, 0.0, {1.25, 1.8e-5}, 1e-4};
+    const drag::DragState<T> clear{1.0, 0.0, {1.25, 1.8e-5}, 1e-4};
     CHECK(drag::evaluate_checked(any, clear).classical() == 0.0);
     CHECK(std::isfinite(
         drag::evaluate_with_derivatives_checked(any, clear).force_slip_derivative(drag::Buoyancy::pressure_gradient)));
   }
 }
 
-TEST_CASE("out of domain: Beetstra polydisperse species of a two-species mixture") {
+TEST_CASE_TEMPLATE("out of domain: Beetstra polydisperse species of a two-species mixture", T, FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> arguments{
       {"fluid.density", 1.25, not_positive},
       {"fluid.viscosity", 1.8e-5, not_positive},
@@ -75,15 +81,15 @@ TEST_CASE("out of domain: Beetstra polydisperse species of a two-species mixture
       {"mixture[1].diameter", 2e-4, not_positive},
   };
   for (const auto law : {drag::BeetstraPolydisperse::published(), drag::BeetstraPolydisperse::without_cubic_term()})
-    check_entry_point(std::string(law.name()), arguments, [&](const Values& v) {
-      const std::array<drag::Species<double>, 2> mixture{{{v[3], v[4]}, {v[5], v[6]}}};
-      return law.checked(drag::PolydisperseDragState<double>{mixture, 0, v[2], {v[0], v[1]}}).classical();
+    check_entry_point<T>(std::string(law.name()), arguments, [&](const ValuesOf<T>& v) {
+      const std::array<drag::Species<T>, 2> mixture{{{v[3], v[4]}, {v[5], v[6]}}};
+      return law.checked(drag::PolydisperseDragState<T>{mixture, 0, v[2], {v[0], v[1]}}).classical();
     });
   const auto law = drag::BeetstraPolydisperse::published();
-  const std::array<drag::Species<double>, 2> full{{{0.5, 1e-4}, {0.5, 2e-4}}};
-  CHECK_THROWS_WITH_AS(law.checked(drag::PolydisperseDragState<double>{full, 0, 0.1, {1.25, 1.8e-5}}),
+  const std::array<drag::Species<T>, 2> full{{{0.5, 1e-4}, {0.5, 2e-4}}};
+  CHECK_THROWS_WITH_AS(law.checked(drag::PolydisperseDragState<T>{full, 0, 0.1, {1.25, 1.8e-5}}),
                        doctest::Contains("'sum of mixture volume fractions' = 1"), std::domain_error);
-  CHECK_THROWS_WITH_AS(law.checked(drag::PolydisperseDragState<double>{full, 2, 0.1, {1.25, 1.8e-5}}),
+  CHECK_THROWS_WITH_AS(law.checked(drag::PolydisperseDragState<T>{full, 2, 0.1, {1.25, 1.8e-5}}),
                        doctest::Contains("'species' = 2"), std::domain_error);
 }
 
@@ -127,115 +133,121 @@ TEST_CASE("in the domain, β out of the range of the type: checked throws, namin
                          std::domain_error);
 }
 
-TEST_CASE("out of domain: Syamlal-O'Brien calibration from minimum fluidization") {
-  check_entry_point("SyamlalOBrien::from_minimum_fluidization",
-                    concatenated({{"minimum_fluidization_velocity", 5e-3, not_positive},
-                                  {"minimum_fluidization_voidage", 0.45, outside_open_unit}},
-                                 settling_system),
-                    [](const Values& v) {
-                      return drag::SyamlalOBrien::from_minimum_fluidization(v[0], v[1], fluid_of(v, 2),
-                                                                            particles_of(v, 2), v[6])
-                          .c1();
-                    });
+TEST_CASE_TEMPLATE("out of domain: Syamlal-O'Brien calibration from minimum fluidization", T, FLUIDBED_SCALAR_TYPES) {
+  check_entry_point<T>("SyamlalOBrien::from_minimum_fluidization",
+                       concatenated({{"minimum_fluidization_velocity", 5e-3, not_positive},
+                                     {"minimum_fluidization_voidage", 0.45, outside_open_unit}},
+                                    settling_system),
+                       [](const ValuesOf<T>& v) {
+                         return drag::SyamlalOBrien::from_minimum_fluidization(v[0], v[1], fluid_of(v, 2),
+                                                                               particles_of(v, 2), v[6])
+                             .c1();
+                       });
 }
 
-TEST_CASE("out of domain: Richardson-Zaki exponents, law and inverse") {
+TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<Argument> reynolds{{"terminal_reynolds", 10.0, negative, {0.0}}};
-  check_entry_point("richardson_zaki_exponent_mazzei", reynolds,
-                    [](const Values& v) { return richardson_zaki_exponent_mazzei_checked(v[0]); });
-  check_entry_point("richardson_zaki_exponent_mazzei_derivative", {{"terminal_reynolds", 10.0, negative}},
-                    [](const Values& v) { return richardson_zaki_exponent_mazzei_derivative_checked(v[0]); });
-  CHECK(richardson_zaki_exponent_mazzei_derivative_checked(0.0) == -inf);  // documented: −∞ at Re_t = 0
-  check_entry_point("richardson_zaki_exponent_rowe", reynolds,
-                    [](const Values& v) { return richardson_zaki_exponent_rowe_checked(v[0]); });
-  check_entry_point("richardson_zaki_exponent_garside_al_dibouni", reynolds,
-                    [](const Values& v) { return richardson_zaki_exponent_garside_al_dibouni_checked(v[0]); });
-  check_entry_point("richardson_zaki_exponent_1954",
-                    concatenated(reynolds, {{"wall_ratio", 0.01, outside_solid_fraction, {0.0}}}),
-                    [](const Values& v) { return richardson_zaki_exponent_1954_checked(v[0], v[1]); });
-  check_entry_point("richardson_zaki_exponent_khan_richardson",
-                    {{"archimedes", 100.0, negative, {0.0}},
-                     {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
-                    [](const Values& v) { return richardson_zaki_exponent_khan_richardson_checked(v[0], v[1]); });
-  check_entry_point("richardson_zaki_velocity",
-                    {{"terminal_velocity", 0.1, negative, {0.0}},
-                     {"voidage", 0.5, outside_voidage, {1.0}},
-                     {"exponent", 4.0, not_positive}},
-                    [](const Values& v) { return richardson_zaki_velocity_checked(v[0], v[1], v[2]); });
+  check_entry_point<T>("richardson_zaki_exponent_mazzei", reynolds,
+                       [](const ValuesOf<T>& v) { return richardson_zaki_exponent_mazzei_checked(v[0]); });
+  check_entry_point<T>("richardson_zaki_exponent_mazzei_derivative", {{"terminal_reynolds", 10.0, negative}},
+                       [](const ValuesOf<T>& v) { return richardson_zaki_exponent_mazzei_derivative_checked(v[0]); });
+  CHECK(richardson_zaki_exponent_mazzei_derivative_checked(T(0)) ==
+        -std::numeric_limits<T>::infinity());  // documented: −∞ at Re_t = 0
+  check_entry_point<T>("richardson_zaki_exponent_rowe", reynolds,
+                       [](const ValuesOf<T>& v) { return richardson_zaki_exponent_rowe_checked(v[0]); });
+  check_entry_point<T>("richardson_zaki_exponent_garside_al_dibouni", reynolds,
+                       [](const ValuesOf<T>& v) { return richardson_zaki_exponent_garside_al_dibouni_checked(v[0]); });
+  check_entry_point<T>("richardson_zaki_exponent_1954",
+                       concatenated(reynolds, {{"wall_ratio", 0.01, outside_solid_fraction, {0.0}}}),
+                       [](const ValuesOf<T>& v) { return richardson_zaki_exponent_1954_checked(v[0], v[1]); });
+  check_entry_point<T>(
+      "richardson_zaki_exponent_khan_richardson",
+      {{"archimedes", 100.0, negative, {0.0}},
+       {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
+      [](const ValuesOf<T>& v) { return richardson_zaki_exponent_khan_richardson_checked(v[0], v[1]); });
+  check_entry_point<T>("richardson_zaki_velocity",
+                       {{"terminal_velocity", 0.1, negative, {0.0}},
+                        {"voidage", 0.5, outside_voidage, {1.0}},
+                        {"exponent", 4.0, not_positive}},
+                       [](const ValuesOf<T>& v) { return richardson_zaki_velocity_checked(v[0], v[1], v[2]); });
   // u_s ∈ (0, u_t] with u_t = 1: the voidage's own interval.
-  check_entry_point("richardson_zaki_voidage",
-                    {{"superficial_velocity", 0.5, outside_voidage, {1.0}},
-                     {"terminal_velocity", 1.0, not_positive},
-                     {"exponent", 4.0, not_positive}},
-                    [](const Values& v) { return richardson_zaki_voidage_checked(v[0], v[1], v[2]); });
-  check_entry_point("richardson_zaki_terminal_reynolds",
-                    {{"reynolds", 10.0, negative, {0.0}}, {"voidage", 0.5, outside_voidage, {1.0}}},
-                    [](const Values& v) { return richardson_zaki_terminal_reynolds_checked(v[0], v[1]); });
+  check_entry_point<T>("richardson_zaki_voidage",
+                       {{"superficial_velocity", 0.5, outside_voidage, {1.0}},
+                        {"terminal_velocity", 1.0, not_positive},
+                        {"exponent", 4.0, not_positive}},
+                       [](const ValuesOf<T>& v) { return richardson_zaki_voidage_checked(v[0], v[1], v[2]); });
+  check_entry_point<T>("richardson_zaki_terminal_reynolds",
+                       {{"reynolds", 10.0, negative, {0.0}}, {"voidage", 0.5, outside_voidage, {1.0}}},
+                       [](const ValuesOf<T>& v) { return richardson_zaki_terminal_reynolds_checked(v[0], v[1]); });
 }
 
-TEST_CASE("out of domain: terminal Reynolds numbers and terminal velocities") {
+TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal velocities", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<Argument> archimedes{{"archimedes", 1e4, negative, {0.0}}};
-  check_entry_point("terminal_reynolds_stokes", archimedes,
-                    [](const Values& v) { return terminal_reynolds_stokes_checked(v[0]); });
-  check_entry_point("terminal_reynolds_newton", archimedes,
-                    [](const Values& v) { return terminal_reynolds_newton_checked(v[0]); });
-  check_entry_point("terminal_reynolds_dallavalle", archimedes,
-                    [](const Values& v) { return terminal_reynolds_dallavalle_checked(v[0]); });
-  check_entry_point("terminal_reynolds_schiller_naumann", archimedes,
-                    [](const Values& v) { return terminal_reynolds_schiller_naumann_checked(v[0]); });
+  check_entry_point<T>("terminal_reynolds_stokes", archimedes,
+                       [](const ValuesOf<T>& v) { return terminal_reynolds_stokes_checked(v[0]); });
+  check_entry_point<T>("terminal_reynolds_newton", archimedes,
+                       [](const ValuesOf<T>& v) { return terminal_reynolds_newton_checked(v[0]); });
+  check_entry_point<T>("terminal_reynolds_dallavalle", archimedes,
+                       [](const ValuesOf<T>& v) { return terminal_reynolds_dallavalle_checked(v[0]); });
+  check_entry_point<T>("terminal_reynolds_schiller_naumann", archimedes,
+                       [](const ValuesOf<T>& v) { return terminal_reynolds_schiller_naumann_checked(v[0]); });
   const auto velocity = [](auto checked) {
-    return [checked](const Values& v) { return checked(fluid_of(v, 0), particles_of(v, 0), v[4]); };
+    return [checked](const ValuesOf<T>& v) { return checked(fluid_of(v, 0), particles_of(v, 0), v[4]); };
   };
-  check_entry_point("terminal_velocity_stokes", settling_system,
-                    velocity([](auto f, auto p, double g) { return terminal_velocity_stokes_checked(f, p, g); }));
-  check_entry_point("terminal_velocity_newton", settling_system,
-                    velocity([](auto f, auto p, double g) { return terminal_velocity_newton_checked(f, p, g); }));
-  check_entry_point("terminal_velocity_dallavalle", settling_system,
-                    velocity([](auto f, auto p, double g) { return terminal_velocity_dallavalle_checked(f, p, g); }));
-  check_entry_point("terminal_velocity_schiller_naumann", settling_system, velocity([](auto f, auto p, double g) {
-                      return terminal_velocity_schiller_naumann_checked(f, p, g);
-                    }));
+  check_entry_point<T>("terminal_velocity_stokes", settling_system,
+                       velocity([](auto f, auto p, auto g) { return terminal_velocity_stokes_checked(f, p, g); }));
+  check_entry_point<T>("terminal_velocity_newton", settling_system,
+                       velocity([](auto f, auto p, auto g) { return terminal_velocity_newton_checked(f, p, g); }));
+  check_entry_point<T>("terminal_velocity_dallavalle", settling_system,
+                       velocity([](auto f, auto p, auto g) { return terminal_velocity_dallavalle_checked(f, p, g); }));
+  check_entry_point<T>("terminal_velocity_schiller_naumann", settling_system, velocity([](auto f, auto p, auto g) {
+                         return terminal_velocity_schiller_naumann_checked(f, p, g);
+                       }));
 }
 
-TEST_CASE("out of domain: minimum fluidization") {
+TEST_CASE_TEMPLATE("out of domain: minimum fluidization", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<Argument> bed{{"voidage", 0.4, outside_open_unit}, {"sphericity", 0.75, outside_voidage, {1.0}}};
-  check_entry_point("minimum_fluidization_reynolds_ergun", concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed),
-                    [](const Values& v) { return minimum_fluidization_reynolds_ergun_checked(v[0], v[1], v[2]); });
-  check_entry_point("minimum_fluidization_reynolds_wen_yu", {{"archimedes", 1e4, negative, {0.0}}},
-                    [](const Values& v) { return minimum_fluidization_reynolds_wen_yu_checked(v[0]); });
-  check_entry_point("minimum_fluidization_velocity_ergun", concatenated(settling_system, bed), [](const Values& v) {
-    return minimum_fluidization_velocity_ergun_checked(fluid_of(v, 0), particles_of(v, 0), v[5], v[6], v[4]);
-  });
-  check_entry_point("minimum_fluidization_velocity_wen_yu", settling_system, [](const Values& v) {
+  check_entry_point<T>(
+      "minimum_fluidization_reynolds_ergun", concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed),
+      [](const ValuesOf<T>& v) { return minimum_fluidization_reynolds_ergun_checked(v[0], v[1], v[2]); });
+  check_entry_point<T>("minimum_fluidization_reynolds_wen_yu", {{"archimedes", 1e4, negative, {0.0}}},
+                       [](const ValuesOf<T>& v) { return minimum_fluidization_reynolds_wen_yu_checked(v[0]); });
+  check_entry_point<T>(
+      "minimum_fluidization_velocity_ergun", concatenated(settling_system, bed), [](const ValuesOf<T>& v) {
+        return minimum_fluidization_velocity_ergun_checked(fluid_of(v, 0), particles_of(v, 0), v[5], v[6], v[4]);
+      });
+  check_entry_point<T>("minimum_fluidization_velocity_wen_yu", settling_system, [](const ValuesOf<T>& v) {
     return minimum_fluidization_velocity_wen_yu_checked(fluid_of(v, 0), particles_of(v, 0), v[4]);
   });
 }
 
-TEST_CASE("out of domain: bed expansion, voidage ratio, equivalent exponent and bed height") {
+TEST_CASE_TEMPLATE("out of domain: bed expansion, voidage ratio, equivalent exponent and bed height", T,
+                   FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const drag::MazzeiLettieri law;
   const std::vector<Argument> expansion = concatenated({{"superficial_velocity", 5e-3, not_positive}}, settling_system);
-  check_entry_point("equilibrium_voidage", expansion, [&](const Values& v) {
+  check_entry_point<T>("equilibrium_voidage", expansion, [&](const ValuesOf<T>& v) {
     return equilibrium_voidage_checked(law, v[0], fluid_of(v, 1), particles_of(v, 1), v[5]);
   });
-  check_entry_point("equilibrium_voidage (AnyDragLaw)", expansion, [](const Values& v) {
+  check_entry_point<T>("equilibrium_voidage (AnyDragLaw)", expansion, [](const ValuesOf<T>& v) {
     return equilibrium_voidage_checked(drag::make_drag_law("WenYu1966"), v[0], fluid_of(v, 1), particles_of(v, 1),
                                        v[5]);
   });
-  check_entry_point("richardson_zaki_equilibrium_voidage", expansion, [](const Values& v) {
+  check_entry_point<T>("richardson_zaki_equilibrium_voidage", expansion, [](const ValuesOf<T>& v) {
     return richardson_zaki_equilibrium_voidage_checked(v[0], fluid_of(v, 1), particles_of(v, 1), v[5]);
   });
-  check_entry_point("voidage_ratio",
-                    {{"reynolds", 10.0, not_positive}, {"richardson_zaki_voidage", 0.5, outside_open_unit}},
-                    [&](const Values& v) { return voidage_ratio_checked(law, v[0], v[1]).value(); });
-  check_entry_point("equivalent_exponent", {{"voidage", 0.5, outside_open_unit}, {"reynolds", 10.0, negative, {0.0}}},
-                    [&](const Values& v) { return equivalent_exponent_checked(law, v[0], v[1]); });
-  check_entry_point("bed_height",
-                    {{"initial_height", 1.0, not_positive},
-                     {"initial_voidage", 0.4, outside_open_unit},
-                     {"voidage", 0.5, outside_open_unit}},
-                    [](const Values& v) { return bed_height_checked(v[0], v[1], v[2]); });
+  check_entry_point<T>("voidage_ratio",
+                       {{"reynolds", 10.0, not_positive}, {"richardson_zaki_voidage", 0.5, outside_open_unit}},
+                       [&](const ValuesOf<T>& v) { return voidage_ratio_checked(law, v[0], v[1]).value(); });
+  check_entry_point<T>("equivalent_exponent",
+                       {{"voidage", 0.5, outside_open_unit}, {"reynolds", 10.0, negative, {0.0}}},
+                       [&](const ValuesOf<T>& v) { return equivalent_exponent_checked(law, v[0], v[1]); });
+  check_entry_point<T>("bed_height",
+                       {{"initial_height", 1.0, not_positive},
+                        {"initial_voidage", 0.4, outside_open_unit},
+                        {"voidage", 0.5, outside_open_unit}},
+                       [](const ValuesOf<T>& v) { return bed_height_checked(v[0], v[1], v[2]); });
 }

@@ -1,6 +1,6 @@
 // Out-of-domain input for every checked entry point of elastic/: the moduli, the elastic
 // force, the other interaction forces and the stability of homogeneous fluidization (see
-// test_out_of_domain.hpp for what each table entry checks).
+// test_out_of_domain.hpp for what each table entry checks), in float, double and long double.
 #include <doctest/doctest.h>
 
 #include <array>
@@ -8,6 +8,7 @@
 
 #include "fluidbed/elastic.hpp"
 #include "test_out_of_domain.hpp"
+#include "test_scalar_types.hpp"
 
 namespace {
 
@@ -35,9 +36,15 @@ std::vector<Argument> vector_argument(const std::string& name, const Vector3<dou
   return components;
 }
 
-Vector3<double> vector_of(const Values& v, std::size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
+template <class T>
+Vector3<T> vector_of(const ValuesOf<T>& v, std::size_t at) {
+  return {v[at], v[at + 1], v[at + 2]};
+}
 
-double sum_of(const Vector3<double>& v) { return v[0] + v[1] + v[2]; }
+template <class T>
+T sum_of(const Vector3<T>& v) {
+  return v[0] + v[1] + v[2];
+}
 
 // The suspension of homogeneous_suspension(FCC in air) with each field an argument.
 const HomogeneousSuspension<double> fcc = homogeneous_suspension<double>({1.25, 1.8e-5}, {1210.0, 1e-4});
@@ -48,155 +55,170 @@ const std::vector<Argument> suspension_fields =
                                        {"suspension.exponent", fcc.exponent, not_positive},
                                    });
 
-HomogeneousSuspension<double> suspension_of(const Values& v) {
+template <class T>
+HomogeneousSuspension<T> suspension_of(const ValuesOf<T>& v) {
   return {fluid_of(v, 0), particles_of(v, 0), v[4], v[5], v[6], v[7]};
 }
 
 }  // namespace
 
-TEST_CASE("out of domain: elastic moduli at equilibrium, Table 3.1 functions and H") {
+TEST_CASE_TEMPLATE("out of domain: elastic moduli at equilibrium, Table 3.1 functions and H", T,
+                   FLUIDBED_SCALAR_TYPES) {
   for (const ElasticModel model : models) {
-    check_entry_point("equilibrium_modulus " + std::string(name(model)),
-                      concatenated({{"voidage", 0.5, outside_voidage, {1.0}}},
-                                   concatenated(fluidized_system, {{"terminal_reynolds", 4.0, negative, {0.0}}})),
-                      [model](const Values& v) {
-                        return equilibrium_modulus_checked(model, v[0], fluid_of(v, 1), particles_of(v, 1), v[6], v[5]);
-                      });
-    check_entry_point("voidage_sensitivity " + std::string(name(model)),
-                      {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}},
-                      [model](const Values& v) { return voidage_sensitivity_checked(model, v[0], v[1]); });
+    check_entry_point<T>("equilibrium_modulus " + std::string(name(model)),
+                         concatenated({{"voidage", 0.5, outside_voidage, {1.0}}},
+                                      concatenated(fluidized_system, {{"terminal_reynolds", 4.0, negative, {0.0}}})),
+                         [model](const ValuesOf<T>& v) {
+                           return equilibrium_modulus_checked(model, v[0], fluid_of(v, 1), particles_of(v, 1), v[6],
+                                                              v[5]);
+                         });
+    check_entry_point<T>("voidage_sensitivity " + std::string(name(model)),
+                         {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}},
+                         [model](const ValuesOf<T>& v) { return voidage_sensitivity_checked(model, v[0], v[1]); });
   }
-  check_entry_point("mazzei_lettieri_functions",
-                    {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}}, [](const Values& v) {
-                      const auto f = mazzei_lettieri_functions_checked(v[0], v[1]);
-                      return f.exponent + f.reynolds_factor + f.drag_factor + f.voidage_sensitivity;
-                    });
+  check_entry_point<T>("mazzei_lettieri_functions",
+                       {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}},
+                       [](const ValuesOf<T>& v) {
+                         const auto f = mazzei_lettieri_functions_checked(v[0], v[1]);
+                         return f.exponent + f.reynolds_factor + f.drag_factor + f.voidage_sensitivity;
+                       });
   CHECK(mazzei_lettieri_functions_checked(0.5, 0.0).exponent_slope == -inf);  // N(0), documented
 }
 
-TEST_CASE("out of domain: functions of a state (voidage, slip): Re*, H, drag and modulus off equilibrium") {
+TEST_CASE_TEMPLATE("out of domain: functions of a state (voidage, slip): Re*, H, drag and modulus off equilibrium", T,
+                   FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> state{
       {"voidage", 0.5, outside_voidage, {1.0}}, {"slip", 0.1, negative, {0.0}},
       {"fluid.density", 1.25, not_positive},    {"fluid.viscosity", 1.8e-5, not_positive},
       {"diameter", 1e-4, not_positive},
   };
-  const auto fluid = [](const Values& v) { return Fluid<double>{v[2], v[3]}; };
-  check_entry_point("effective_reynolds", state,
-                    [&](const Values& v) { return effective_reynolds_checked(v[0], v[1], fluid(v), v[4]); });
-  check_entry_point("mazzei_lettieri_sensitivity", state,
-                    [&](const Values& v) { return mazzei_lettieri_sensitivity_checked(v[0], v[1], fluid(v), v[4]); });
-  check_entry_point("mazzei_lettieri_drag_and_sensitivity", state, [&](const Values& v) {
+  const auto fluid = [](const ValuesOf<T>& v) { return Fluid<T>{v[2], v[3]}; };
+  check_entry_point<T>("effective_reynolds", state,
+                       [&](const ValuesOf<T>& v) { return effective_reynolds_checked(v[0], v[1], fluid(v), v[4]); });
+  check_entry_point<T>("mazzei_lettieri_sensitivity", state, [&](const ValuesOf<T>& v) {
+    return mazzei_lettieri_sensitivity_checked(v[0], v[1], fluid(v), v[4]);
+  });
+  check_entry_point<T>("mazzei_lettieri_drag_and_sensitivity", state, [&](const ValuesOf<T>& v) {
     const auto d = mazzei_lettieri_drag_and_sensitivity_checked(v[0], v[1], fluid(v), v[4]);
     return d.beta + d.sensitivity;
   });
-  check_entry_point("mazzei_lettieri_modulus", state,
-                    [&](const Values& v) { return mazzei_lettieri_modulus_checked(v[0], v[1], fluid(v), v[4]); });
-  CHECK(mazzei_lettieri_modulus_checked(1.0, 0.0, Fluid<double>{1.25, 1.8e-5}, 1e-4) == 0.0);  // ε = 1, w = 0
+  check_entry_point<T>("mazzei_lettieri_modulus", state, [&](const ValuesOf<T>& v) {
+    return mazzei_lettieri_modulus_checked(v[0], v[1], fluid(v), v[4]);
+  });
+  CHECK(mazzei_lettieri_modulus_checked(T(1), T(0), Fluid<T>{T(1.25L), T(1.8e-5L)}, T(1e-4L)) == 0);  // ε = 1, w = 0
 }
 
-TEST_CASE("out of domain: elastic force, 3-D and vertical") {
+TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> force =
       concatenated(concatenated(vector_argument("drag_force", {0.0, 1.0, 2.0}),
                                 vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    {{"sensitivity", -4.8, non_finite}, {"diameter", 1e-4, not_positive}});
-  check_entry_point("elastic_force", force, [](const Values& v) {
+  check_entry_point<T>("elastic_force", force, [](const ValuesOf<T>& v) {
     return sum_of(elastic_force_checked(vector_of(v, 0), vector_of(v, 3), v[6], v[7]));
   });
-  CHECK(elastic_force_checked(Vector3<double>{0, 0, 0}, Vector3<double>{0, 0, 4}, -4.8, 1e-4) ==
-        Vector3<double>{0, 0, 0});  // no drag, no force
+  CHECK(elastic_force_checked(Vector3<T>{0, 0, 0}, Vector3<T>{0, 0, 4}, T(-4.8L), T(1e-4L)) ==
+        Vector3<T>{0, 0, 0});  // no drag, no force
   const std::vector<Argument> vertical =
       concatenated(concatenated({{"modulus", 0.5, non_finite}}, vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    vector_argument("upward", {0.0, 0.0, 1.0}));
-  check_entry_point("elastic_force_vertical", vertical, [](const Values& v) {
+  check_entry_point<T>("elastic_force_vertical", vertical, [](const ValuesOf<T>& v) {
     return sum_of(elastic_force_vertical_checked(v[0], vector_of(v, 1), vector_of(v, 4)));
   });
-  CHECK_THROWS_WITH_AS(elastic_force_vertical_checked(1.0, Vector3<double>{0, 0, 1}, Vector3<double>{0, 0, 2}),
+  CHECK_THROWS_WITH_AS(elastic_force_vertical_checked(T(1), Vector3<T>{0, 0, 1}, Vector3<T>{0, 0, 2}),
                        doctest::Contains("'|upward|' = 2"), std::domain_error);
 }
 
-TEST_CASE("out of domain: buoyancy and the other interaction forces") {
+TEST_CASE_TEMPLATE("out of domain: buoyancy and the other interaction forces", T, FLUIDBED_SCALAR_TYPES) {
   const Argument solid_fraction{"solid_fraction", 0.5, outside_solid_fraction, {0.0}};
   const Argument fluid_density{"fluid_density", 1.25, not_positive};
   const Argument coefficient{"coefficient", 0.5, negative, {0.0}};
   const auto gravity = vector_argument("gravity", {0.0, 0.0, -9.81});
-  check_entry_point("classical_buoyancy", concatenated({solid_fraction, fluid_density}, gravity),
-                    [](const Values& v) { return sum_of(classical_buoyancy_checked(v[0], v[1], vector_of(v, 2))); });
-  check_entry_point("stress_buoyancy",
-                    concatenated({solid_fraction}, vector_argument("fluid_stress_divergence", {0.0, 0.0, -12.0})),
-                    [](const Values& v) { return sum_of(stress_buoyancy_checked(v[0], vector_of(v, 1))); });
-  check_entry_point("pressure_gradient_buoyancy",
-                    concatenated({solid_fraction}, vector_argument("pressure_gradient", {0.0, 0.0, -12.0})),
-                    [](const Values& v) { return sum_of(pressure_gradient_buoyancy_checked(v[0], vector_of(v, 1))); });
-  check_entry_point(
+  check_entry_point<T>(
+      "classical_buoyancy", concatenated({solid_fraction, fluid_density}, gravity),
+      [](const ValuesOf<T>& v) { return sum_of(classical_buoyancy_checked(v[0], v[1], vector_of(v, 2))); });
+  check_entry_point<T>("stress_buoyancy",
+                       concatenated({solid_fraction}, vector_argument("fluid_stress_divergence", {0.0, 0.0, -12.0})),
+                       [](const ValuesOf<T>& v) { return sum_of(stress_buoyancy_checked(v[0], vector_of(v, 1))); });
+  check_entry_point<T>(
+      "pressure_gradient_buoyancy",
+      concatenated({solid_fraction}, vector_argument("pressure_gradient", {0.0, 0.0, -12.0})),
+      [](const ValuesOf<T>& v) { return sum_of(pressure_gradient_buoyancy_checked(v[0], vector_of(v, 1))); });
+  check_entry_point<T>(
       "homogeneous_buoyancy",
       concatenated({solid_fraction, fluid_density, {"particle_density", 1210.0, not_positive}}, gravity),
-      [](const Values& v) { return sum_of(homogeneous_buoyancy_checked(v[0], v[1], v[2], vector_of(v, 3))); });
-  check_entry_point(
+      [](const ValuesOf<T>& v) { return sum_of(homogeneous_buoyancy_checked(v[0], v[1], v[2], vector_of(v, 3))); });
+  check_entry_point<T>(
       "local_fluid_acceleration_force",
       concatenated({solid_fraction, fluid_density}, vector_argument("fluid_acceleration", {0.0, 1.0, 2.0})),
-      [](const Values& v) { return sum_of(local_fluid_acceleration_force_checked(v[0], v[1], vector_of(v, 2))); });
-  check_entry_point("virtual_mass_force",
-                    concatenated(concatenated(concatenated({solid_fraction, fluid_density},
-                                                           vector_argument("fluid_acceleration", {0.0, 1.0, 2.0})),
-                                              vector_argument("particle_acceleration", {0.5, 0.0, 1.0})),
-                                 {coefficient}),
-                    [](const Values& v) {
-                      return sum_of(virtual_mass_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8]));
-                    });
-  check_entry_point(
-      "lift_force",
-      concatenated(concatenated(concatenated({solid_fraction, fluid_density},
-                                             vector_argument("fluid_vorticity", {0.0, 1.0, 2.0})),
-                                vector_argument("slip_velocity", {0.5, 0.0, 1.0})),
+      [](const ValuesOf<T>& v) { return sum_of(local_fluid_acceleration_force_checked(v[0], v[1], vector_of(v, 2))); });
+  check_entry_point<T>("virtual_mass_force",
+                       concatenated(concatenated(concatenated({solid_fraction, fluid_density},
+                                                              vector_argument("fluid_acceleration", {0.0, 1.0, 2.0})),
+                                                 vector_argument("particle_acceleration", {0.5, 0.0, 1.0})),
+                                    {coefficient}),
+                       [](const ValuesOf<T>& v) {
+                         return sum_of(virtual_mass_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8]));
+                       });
+  check_entry_point<T>("lift_force",
+                       concatenated(concatenated(concatenated({solid_fraction, fluid_density},
+                                                              vector_argument("fluid_vorticity", {0.0, 1.0, 2.0})),
+                                                 vector_argument("slip_velocity", {0.5, 0.0, 1.0})),
+                                    {coefficient}),
+                       [](const ValuesOf<T>& v) {
+                         return sum_of(lift_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8]));
+                       });
+  check_entry_point<T>(
+      "faxen_force",
+      concatenated(concatenated({solid_fraction, {"fluid_viscosity", 1.8e-5, not_positive}},
+                                vector_argument("fluid_velocity_laplacian", {0.0, 1.0, 2.0})),
                    {coefficient}),
-      [](const Values& v) { return sum_of(lift_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8])); });
-  check_entry_point("faxen_force",
-                    concatenated(concatenated({solid_fraction, {"fluid_viscosity", 1.8e-5, not_positive}},
-                                              vector_argument("fluid_velocity_laplacian", {0.0, 1.0, 2.0})),
-                                 {coefficient}),
-                    [](const Values& v) { return sum_of(faxen_force_checked(v[0], v[1], vector_of(v, 2), v[5])); });
+      [](const ValuesOf<T>& v) { return sum_of(faxen_force_checked(v[0], v[1], vector_of(v, 2), v[5])); });
 }
 
-TEST_CASE("out of domain: homogeneous suspension, stability function and waves") {
-  check_entry_point("homogeneous_suspension", fluidized_system, [](const Values& v) {
+TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function and waves", T, FLUIDBED_SCALAR_TYPES) {
+  check_entry_point<T>("homogeneous_suspension", fluidized_system, [](const ValuesOf<T>& v) {
     return homogeneous_suspension_checked(fluid_of(v, 0), particles_of(v, 0), v[4]).terminal_velocity;
   });
   const std::vector<Argument> state = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage}});
   for (const ElasticModel model : models) {
-    check_entry_point("stability_function " + std::string(name(model)), state,
-                      [model](const Values& v) { return stability_function_checked(model, suspension_of(v), v[8]); });
+    check_entry_point<T>("stability_function " + std::string(name(model)), state, [model](const ValuesOf<T>& v) {
+      return stability_function_checked(model, suspension_of(v), v[8]);
+    });
     // ε = 1 is in the domain: S → −∞ there (both wave speeds vanish, u_d/u_k ∝ (1 − ε)^−½).
-    CHECK(stability_function_checked(model, fcc, 1.0) == -inf);
-    check_entry_point("wave_speeds " + std::string(name(model)),
-                      concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage, {1.0}}}),
-                      [model](const Values& v) {
-                        const WaveSpeeds<double> w = wave_speeds_checked(model, suspension_of(v), v[8]);
-                        return w.kinematic + w.dynamic + w.damping;
-                      });
+    const auto suspension = homogeneous_suspension<T>({T(1.25L), T(1.8e-5L)}, {T(1210), T(1e-4L)});
+    CHECK(stability_function_checked(model, suspension, T(1)) == -std::numeric_limits<T>::infinity());
+    check_entry_point<T>("wave_speeds " + std::string(name(model)),
+                         concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage, {1.0}}}),
+                         [model](const ValuesOf<T>& v) {
+                           const WaveSpeeds<T> w = wave_speeds_checked(model, suspension_of(v), v[8]);
+                           return w.kinematic + w.dynamic + w.damping;
+                         });
   }
   const std::vector<Argument> waves{
       {"waves.kinematic", 0.02, negative, {0.0}},
       {"waves.dynamic", 0.01, negative, {0.0}},
       {"waves.damping", 20.0, negative, {0.0}},
   };
-  const auto waves_of = [](const Values& v) { return WaveSpeeds<double>{v[0], v[1], v[2]}; };
-  check_entry_point("wave_of_wavenumber", concatenated(waves, {{"wavenumber", 100.0, not_positive}}),
-                    [&](const Values& v) {
-                      const Wave<double> w = wave_of_wavenumber_checked(waves_of(v), v[3]);
-                      return w.growth_rate + w.velocity;
-                    });
-  check_entry_point("growth_rate_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
-                    [&](const Values& v) { return growth_rate_of_wave_velocity_checked(waves_of(v), v[3]); });
-  check_entry_point("squared_wavenumber_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
-                    [&](const Values& v) { return squared_wavenumber_of_wave_velocity_checked(waves_of(v), v[3]); });
+  const auto waves_of = [](const ValuesOf<T>& v) { return WaveSpeeds<T>{v[0], v[1], v[2]}; };
+  check_entry_point<T>("wave_of_wavenumber", concatenated(waves, {{"wavenumber", 100.0, not_positive}}),
+                       [&](const ValuesOf<T>& v) {
+                         const Wave<T> w = wave_of_wavenumber_checked(waves_of(v), v[3]);
+                         return w.growth_rate + w.velocity;
+                       });
+  check_entry_point<T>("growth_rate_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
+                       [&](const ValuesOf<T>& v) { return growth_rate_of_wave_velocity_checked(waves_of(v), v[3]); });
+  check_entry_point<T>(
+      "squared_wavenumber_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
+      [&](const ValuesOf<T>& v) { return squared_wavenumber_of_wave_velocity_checked(waves_of(v), v[3]); });
 }
 
-TEST_CASE("out of domain: minimum bubbling point validates the suspension and the interval") {
+TEST_CASE_TEMPLATE("out of domain: minimum bubbling point validates the suspension and the interval", T,
+                   FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> arguments = concatenated(
       suspension_fields, {{"interval.lower", 0.25, outside_open_unit},
                           {"interval.upper", 1.0, and_non_finite({{0.25, "0.25"}, {0.0, "0"}, {1.5, "1.5"}})}});
-  check_entry_point("minimum_bubbling_point", arguments, [](const Values& v) {
-    return minimum_bubbling_point(ElasticModel::mazzei_lettieri, suspension_of(v), VoidageInterval<double>{v[8], v[9]})
+  check_entry_point<T>("minimum_bubbling_point", arguments, [](const ValuesOf<T>& v) {
+    return minimum_bubbling_point(ElasticModel::mazzei_lettieri, suspension_of(v), VoidageInterval<T>{v[8], v[9]})
         .maximum_stability;
   });
 }

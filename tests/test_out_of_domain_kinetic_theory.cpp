@@ -2,7 +2,8 @@
 // every radial distribution, closure, frictional law, gas-exchange source, mixture form and
 // the solid–solid drag, gas_damping_checked, the algebraic granular temperature and the
 // ConstitutiveSet (see test_out_of_domain.hpp for what each table entry checks). The laws'
-// own parameters (packing limits, length scales, friction angles, …) are arguments too.
+// own parameters (packing limits, length scales, friction angles, …) are arguments too. In
+// float, double and long double (a law's parameters are double members in every type).
 #include <doctest/doctest.h>
 
 #include <array>
@@ -11,6 +12,7 @@
 
 #include "fluidbed/kinetic_theory.hpp"
 #include "test_out_of_domain.hpp"
+#include "test_scalar_types.hpp"
 
 namespace {
 
@@ -49,134 +51,159 @@ const std::vector<Argument> yield_parameters{
 };
 const Argument temperature_floor{"temperature_floor", 1e-6, not_positive};
 
-GranularMaterial<double> material_of(const Values& v, std::size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
-StrainRate<double> rate_of(const Values& v, std::size_t at) { return {v[at], v[at + 1]}; }
-JohnsonJacksonPressure johnson_jackson_of(const Values& v, std::size_t at) {
-  return {v[at], v[at + 1], v[at + 2], v[at + 3], v[at + 4], v[at + 5]};
+template <class T>
+GranularMaterial<T> material_of(const ValuesOf<T>& v, std::size_t at) {
+  return {v[at], v[at + 1], v[at + 2]};
+}
+template <class T>
+StrainRate<T> rate_of(const ValuesOf<T>& v, std::size_t at) {
+  return {v[at], v[at + 1]};
+}
+// A law's parameter: a double member whatever the scalar type of the state.
+template <class T>
+double parameter(const ValuesOf<T>& v, std::size_t at) {
+  return double(v[at]);
+}
+template <class T>
+JohnsonJacksonPressure johnson_jackson_of(const ValuesOf<T>& v, std::size_t at) {
+  return {parameter(v, at),     parameter(v, at + 1), parameter(v, at + 2),
+          parameter(v, at + 3), parameter(v, at + 4), parameter(v, at + 5)};
 }
 
 // A closure law(φ, Θ, g0, material) built by make(values), the law's parameters (if any)
 // being the arguments after the material.
-template <class Make>
+template <class T, class Make>
 void check_closure(const std::string& label, const std::vector<Argument>& parameters, const Make& make) {
-  check_entry_point(label, concatenated(concatenated({solid_fraction, granular_temperature, g0}, material), parameters),
-                    [&](const Values& v) { return evaluate_checked(make(v), v[0], v[1], v[2], material_of(v, 3)); });
+  check_entry_point<T>(
+      label, concatenated(concatenated({solid_fraction, granular_temperature, g0}, material), parameters),
+      [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0], v[1], v[2], material_of(v, 3)); });
 }
 
 // A one-class g0(φ) built by make(values), its parameters after φ.
-template <class Make>
+template <class T, class Make>
 void check_radial_distribution(const std::string& label, const std::vector<Argument>& parameters, const Make& make) {
   const Argument phi{"solid_fraction", 0.3, outside_solid_fraction, {0.0, 0.7}};  // 0.7: beyond packing, continued
-  check_entry_point(label, concatenated({phi}, parameters),
-                    [&](const Values& v) { return evaluate_checked(make(v), v[0]); });
+  check_entry_point<T>(label, concatenated({phi}, parameters),
+                       [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0]); });
 }
 
 }  // namespace
 
-TEST_CASE("out of domain: one-class radial distribution functions and their packing parameters") {
-  check_radial_distribution("CarnahanStarling", {}, [](const Values&) { return CarnahanStarling{}; });
-  check_radial_distribution("PercusYevick", {}, [](const Values&) { return PercusYevick{}; });
-  check_radial_distribution("LunSavage", packing, [](const Values& v) { return LunSavage{v[1], v[2]}; });
-  check_radial_distribution("Ogawa", packing, [](const Values& v) { return Ogawa(v[1], v[2]); });
-  check_radial_distribution("SinclairJackson", packing, [](const Values& v) { return SinclairJackson(v[1], v[2]); });
-  check_radial_distribution("Gidaspow", packing,
-                            [](const Values& v) { return GidaspowRadialDistribution(v[1], v[2]); });
-  check_radial_distribution("MaAhmadi", {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}})}},
-                            [](const Values& v) { return MaAhmadi{v[1]}; });
-  check_radial_distribution("LathouwersBellan", packing, [](const Values& v) { return LathouwersBellan{v[1], v[2]}; });
+TEST_CASE_TEMPLATE("out of domain: one-class radial distribution functions and their packing parameters", T,
+                   FLUIDBED_SCALAR_TYPES) {
+  check_radial_distribution<T>("CarnahanStarling", {}, [](const auto&) { return CarnahanStarling{}; });
+  check_radial_distribution<T>("PercusYevick", {}, [](const auto&) { return PercusYevick{}; });
+  check_radial_distribution<T>("LunSavage", packing, [](const ValuesOf<T>& v) {
+    return LunSavage{parameter(v, 1), parameter(v, 2)};
+  });
+  check_radial_distribution<T>("Ogawa", packing, [](const ValuesOf<T>& v) { return Ogawa(v[1], v[2]); });
+  check_radial_distribution<T>("SinclairJackson", packing,
+                               [](const ValuesOf<T>& v) { return SinclairJackson(v[1], v[2]); });
+  check_radial_distribution<T>("Gidaspow", packing,
+                               [](const ValuesOf<T>& v) { return GidaspowRadialDistribution(v[1], v[2]); });
+  check_radial_distribution<T>("MaAhmadi", {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}})}},
+                               [](const ValuesOf<T>& v) { return MaAhmadi{parameter(v, 1)}; });
+  check_radial_distribution<T>("LathouwersBellan", packing, [](const ValuesOf<T>& v) {
+    return LathouwersBellan{parameter(v, 1), parameter(v, 2)};
+  });
 }
 
-TEST_CASE("out of domain: pressures, viscosities, conductivities and dissipation") {
-  check_closure("LunPressure", {}, [](const Values&) { return LunPressure{}; });
-  check_closure("SyamlalRogersOBrienPressure", {}, [](const Values&) { return SyamlalRogersOBrienPressure{}; });
-  check_closure("AhmadiMaPressure", {{"friction_coefficient", 0.25, negative, {0.0}}},
-                [](const Values& v) { return AhmadiMaPressure{v[6]}; });
-  check_closure("GidaspowViscosity", {}, [](const Values&) { return GidaspowViscosity{}; });
-  check_closure("SyamlalViscosity", {}, [](const Values&) { return SyamlalViscosity{}; });
+TEST_CASE_TEMPLATE("out of domain: pressures, viscosities, conductivities and dissipation", T, FLUIDBED_SCALAR_TYPES) {
+  check_closure<T>("LunPressure", {}, [](const auto&) { return LunPressure{}; });
+  check_closure<T>("SyamlalRogersOBrienPressure", {}, [](const auto&) { return SyamlalRogersOBrienPressure{}; });
+  check_closure<T>("AhmadiMaPressure", {{"friction_coefficient", 0.25, negative, {0.0}}},
+                   [](const ValuesOf<T>& v) { return AhmadiMaPressure{parameter(v, 6)}; });
+  check_closure<T>("GidaspowViscosity", {}, [](const auto&) { return GidaspowViscosity{}; });
+  check_closure<T>("SyamlalViscosity", {}, [](const auto&) { return SyamlalViscosity{}; });
   const std::vector<Argument> length{{"length_scale", 0.05, not_positive}};
-  check_closure("HrenyaSinclairViscosity", length, [](const Values& v) { return HrenyaSinclairViscosity(v[6]); });
-  check_closure("LunBulkViscosity", {}, [](const Values&) { return LunBulkViscosity{}; });
-  check_closure("GidaspowConductivity", {}, [](const Values&) { return GidaspowConductivity{}; });
-  check_closure("SyamlalConductivity", {}, [](const Values&) { return SyamlalConductivity{}; });
-  check_closure("HrenyaSinclairConductivity", length, [](const Values& v) { return HrenyaSinclairConductivity(v[6]); });
-  check_closure("LunDissipation", {}, [](const Values&) { return LunDissipation{}; });
+  check_closure<T>("HrenyaSinclairViscosity", length,
+                   [](const ValuesOf<T>& v) { return HrenyaSinclairViscosity(v[6]); });
+  check_closure<T>("LunBulkViscosity", {}, [](const auto&) { return LunBulkViscosity{}; });
+  check_closure<T>("GidaspowConductivity", {}, [](const auto&) { return GidaspowConductivity{}; });
+  check_closure<T>("SyamlalConductivity", {}, [](const auto&) { return SyamlalConductivity{}; });
+  check_closure<T>("HrenyaSinclairConductivity", length,
+                   [](const ValuesOf<T>& v) { return HrenyaSinclairConductivity(v[6]); });
+  check_closure<T>("LunDissipation", {}, [](const auto&) { return LunDissipation{}; });
 }
 
-TEST_CASE("out of domain: frictional pressures and viscosities") {
+TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLUIDBED_SCALAR_TYPES) {
   const Argument dense{"solid_fraction", 0.62, outside_solid_fraction, {0.0, 0.7}};
-  check_entry_point("JohnsonJacksonPressure", concatenated({dense}, johnson_jackson_parameters),
-                    [](const Values& v) { return evaluate_checked(johnson_jackson_of(v, 1), v[0]); });
-  check_entry_point("SchaefferPressure",
-                    {dense,
-                     {"min_fraction", 0.5, outside_solid_fraction, {0.0}},
-                     {"coefficient", 1e24, negative, {0.0}},
-                     {"exponent", 10.0, negative, {0.0}}},
-                    [](const Values& v) {
-                      return evaluate_checked(SchaefferPressure{v[1], v[2], v[3]}, v[0]);
-                    });
-  check_entry_point(
+  check_entry_point<T>("JohnsonJacksonPressure", concatenated({dense}, johnson_jackson_parameters),
+                       [](const ValuesOf<T>& v) { return evaluate_checked(johnson_jackson_of(v, 1), v[0]); });
+  check_entry_point<T>(
+      "SchaefferPressure",
+      {dense,
+       {"min_fraction", 0.5, outside_solid_fraction, {0.0}},
+       {"coefficient", 1e24, negative, {0.0}},
+       {"exponent", 10.0, negative, {0.0}}},
+      [](const ValuesOf<T>& v) {
+        return evaluate_checked(SchaefferPressure{parameter(v, 1), parameter(v, 2), parameter(v, 3)}, v[0]);
+      });
+  check_entry_point<T>(
       "SchaefferViscosity",
       concatenated(concatenated({{"frictional_pressure", 100.0, negative, {0.0}}}, strain_rate), yield_parameters),
-      [](const Values& v) {
-        return evaluate_checked(SchaefferViscosity{v[3], v[4]}, v[0], rate_of(v, 1));
+      [](const ValuesOf<T>& v) {
+        return evaluate_checked(SchaefferViscosity{parameter(v, 3), parameter(v, 4)}, v[0], rate_of(v, 1));
       });
   const std::vector<Argument> srivastava_sundaresan = concatenated(
       concatenated(concatenated({dense, granular_temperature, {"diameter", 5e-4, not_positive}}, strain_rate),
                    johnson_jackson_parameters),
       yield_parameters);
-  check_entry_point("SrivastavaSundaresan", srivastava_sundaresan, [](const Values& v) {
-    const SrivastavaSundaresan law{johnson_jackson_of(v, 5), v[11], v[12]};
-    const FrictionalStress<double> stress = evaluate_checked(law, v[0], v[1], v[2], rate_of(v, 3));
+  check_entry_point<T>("SrivastavaSundaresan", srivastava_sundaresan, [](const ValuesOf<T>& v) {
+    const SrivastavaSundaresan law{johnson_jackson_of(v, 5), parameter(v, 11), parameter(v, 12)};
+    const FrictionalStress<T> stress = evaluate_checked(law, v[0], v[1], v[2], rate_of(v, 3));
     return stress.pressure + stress.viscosity;
   });
 }
 
-TEST_CASE("out of domain: exchange of granular energy with the gas") {
-  check_entry_point("gas_damping", {{"beta", 10.0, negative, {0.0}}, granular_temperature},
-                    [](const Values& v) { return gas_damping_checked(v[0], v[1]); });
-  check_entry_point("KochSanganiSource",
-                    concatenated({solid_fraction,
-                                  granular_temperature,
-                                  g0,
-                                  {"slip", 0.5, negative, {0.0}},
-                                  {"gas_viscosity", 1.8e-5, not_positive}},
-                                 concatenated(material, {temperature_floor})),
-                    [](const Values& v) {
-                      return evaluate_checked(KochSanganiSource{v[8]}, v[0], v[1], v[2], v[3], v[4], material_of(v, 5));
-                    });
-  check_entry_point("DragFluctuationSource",
-                    concatenated({{"solid_fraction", 0.3, outside_open_unit},
-                                  granular_temperature,
-                                  {"beta", 100.0, negative, {0.0}},
-                                  {"slip", 0.5, negative, {0.0}}},
-                                 concatenated(material, {temperature_floor})),
-                    [](const Values& v) {
-                      return evaluate_checked(DragFluctuationSource{v[7]}, v[0], v[1], v[2], v[3], material_of(v, 4));
-                    });
+TEST_CASE_TEMPLATE("out of domain: exchange of granular energy with the gas", T, FLUIDBED_SCALAR_TYPES) {
+  check_entry_point<T>("gas_damping", {{"beta", 10.0, negative, {0.0}}, granular_temperature},
+                       [](const ValuesOf<T>& v) { return gas_damping_checked(v[0], v[1]); });
+  check_entry_point<T>("KochSanganiSource",
+                       concatenated({solid_fraction,
+                                     granular_temperature,
+                                     g0,
+                                     {"slip", 0.5, negative, {0.0}},
+                                     {"gas_viscosity", 1.8e-5, not_positive}},
+                                    concatenated(material, {temperature_floor})),
+                       [](const ValuesOf<T>& v) {
+                         return evaluate_checked(KochSanganiSource{parameter(v, 8)}, v[0], v[1], v[2], v[3], v[4],
+                                                 material_of(v, 5));
+                       });
+  check_entry_point<T>("DragFluctuationSource",
+                       concatenated({{"solid_fraction", 0.3, outside_open_unit},
+                                     granular_temperature,
+                                     {"beta", 100.0, negative, {0.0}},
+                                     {"slip", 0.5, negative, {0.0}}},
+                                    concatenated(material, {temperature_floor})),
+                       [](const ValuesOf<T>& v) {
+                         return evaluate_checked(DragFluctuationSource{parameter(v, 7)}, v[0], v[1], v[2], v[3],
+                                                 material_of(v, 4));
+                       });
 }
 
-TEST_CASE("out of domain: mixture radial distributions, element by element, and their spans") {
+TEST_CASE_TEMPLATE("out of domain: mixture radial distributions, element by element, and their spans", T,
+                   FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> classes{
       {"fractions[0]", 0.25, negative, {0.0}},
       {"fractions[1]", 0.125, negative, {0.0}},
       {"diameters[0]", 1e-4, not_positive},
       {"diameters[1]", 2e-4, not_positive},
   };
-  const auto pair_value = [](const auto& law, const Values& v) {
-    const std::array<double, 2> fractions{v[0], v[1]}, diameters{v[2], v[3]};
-    return evaluate_checked(law, std::span<const double>(fractions), std::span<const double>(diameters), 0, 1);
+  const auto pair_value = [](const auto& law, const ValuesOf<T>& v) {
+    const std::array<T, 2> fractions{v[0], v[1]}, diameters{v[2], v[3]};
+    return evaluate_checked(law, std::span<const T>(fractions), std::span<const T>(diameters), 0, 1);
   };
-  check_entry_point("Lebowitz", classes, [&](const Values& v) { return pair_value(Lebowitz{}, v); });
-  check_entry_point("Mansoori", classes, [&](const Values& v) { return pair_value(Mansoori{}, v); });
-  check_entry_point("ModifiedMansoori", concatenated(classes, packing), [&](const Values& v) {
-    return pair_value(ModifiedMansoori{v[4], v[5]}, v);
+  check_entry_point<T>("Lebowitz", classes, [&](const ValuesOf<T>& v) { return pair_value(Lebowitz{}, v); });
+  check_entry_point<T>("Mansoori", classes, [&](const ValuesOf<T>& v) { return pair_value(Mansoori{}, v); });
+  check_entry_point<T>("ModifiedMansoori", concatenated(classes, packing), [&](const ValuesOf<T>& v) {
+    return pair_value(ModifiedMansoori{parameter(v, 4), parameter(v, 5)}, v);
   });
 
-  const std::array<double, 2> diameters{1e-4, 2e-4};
-  const auto message = [&](std::vector<double> fractions, std::size_t size, std::size_t i, std::size_t k) {
+  const std::array<T, 2> diameters{T(1e-4L), T(2e-4L)};
+  const auto message = [&](std::vector<T> fractions, std::size_t size, std::size_t i, std::size_t k) {
     return domain_error_message([&] {
-      evaluate_checked(Mansoori{}, std::span<const double>(fractions), std::span<const double>(diameters.data(), size),
-                       i, k);
+      evaluate_checked(Mansoori{}, std::span<const T>(fractions), std::span<const T>(diameters.data(), size), i, k);
     });
   };
   CHECK(message({0.5, 0.5}, 2, 0, 1).find("'sum of fractions' = 1 ") != std::string::npos);
@@ -187,7 +214,7 @@ TEST_CASE("out of domain: mixture radial distributions, element by element, and 
   CHECK(message({}, 0, 0, 0).find("'fractions.size()' = 0") != std::string::npos);
 }
 
-TEST_CASE("out of domain: solid-solid drag") {
+TEST_CASE_TEMPLATE("out of domain: solid-solid drag", T, FLUIDBED_SCALAR_TYPES) {
   const std::vector<Argument> arguments{
       {"phi_p", 0.25, outside_solid_fraction, {0.0}},
       {"phi_q", 0.125, outside_solid_fraction, {0.0}},
@@ -200,44 +227,45 @@ TEST_CASE("out of domain: solid-solid drag") {
       {"relative_speed", 0.1, negative, {0.0}},
       {"friction_coefficient", 0.15, negative, {0.0}},
   };
-  check_entry_point("SyamlalSolidSolidDrag", arguments, [](const Values& v) {
-    return evaluate_checked(SyamlalSolidSolidDrag{v[9]}, v[0], v[1], Particles<double>{v[2], v[3]},
-                            Particles<double>{v[4], v[5]}, v[6], v[7], v[8]);
+  check_entry_point<T>("SyamlalSolidSolidDrag", arguments, [](const ValuesOf<T>& v) {
+    return evaluate_checked(SyamlalSolidSolidDrag{parameter(v, 9)}, v[0], v[1], Particles<T>{v[2], v[3]},
+                            Particles<T>{v[4], v[5]}, v[6], v[7], v[8]);
   });
 }
 
-TEST_CASE("out of domain: algebraic granular temperature, free and through a ConstitutiveSet") {
+TEST_CASE_TEMPLATE("out of domain: algebraic granular temperature, free and through a ConstitutiveSet", T,
+                   FLUIDBED_SCALAR_TYPES) {
   const Argument beta{"beta", 10.0, negative, {0.0}};
   const std::vector<Argument> free =
       concatenated(concatenated({solid_fraction, g0}, material),
                    concatenated(strain_rate, {beta, {"length_scale", 0.05, not_positive}}));
-  check_entry_point("algebraic_granular_temperature", free, [](const Values& v) {
+  check_entry_point<T>("algebraic_granular_temperature", free, [](const ValuesOf<T>& v) {
     return algebraic_granular_temperature_checked(LunPressure{}, HrenyaSinclairViscosity(v[8]), LunBulkViscosity{},
                                                   LunDissipation{}, v[0], v[1], material_of(v, 2), rate_of(v, 5), v[7]);
   });
   // No dissipation (e = 1) and compression: no finite Θ, reported instead of returned as +∞.
-  CHECK_THROWS_WITH_AS(
-      algebraic_granular_temperature_checked(LunPressure{}, GidaspowViscosity{}, LunBulkViscosity{}, LunDissipation{},
-                                             0.3, 2.0, {5e-4, 2500.0, 1.0}, StrainRate<double>{-100.0, 2.0}, 0.0),
-      doctest::Contains("'beta' = 0"), std::domain_error);
+  CHECK_THROWS_WITH_AS(algebraic_granular_temperature_checked(
+                           LunPressure{}, GidaspowViscosity{}, LunBulkViscosity{}, LunDissipation{}, T(0.3L), T(2),
+                           {T(5e-4L), T(2500), T(1)}, StrainRate<T>{T(-100), T(2)}, T(0)),
+                       doctest::Contains("'beta' = 0"), std::domain_error);
 
-  const auto set_of = [](const Values& v, std::size_t at) {
+  const auto set_of = [](const ValuesOf<T>& v, std::size_t at) {
     return ConstitutiveSet{Ogawa(v[at], v[at + 1]), LunPressure{}, HrenyaSinclairViscosity(v[at + 2]),
                            HrenyaSinclairConductivity(v[at + 2])};
   };
   const std::vector<Argument> set_parameters = concatenated(packing, {{"length_scale", 0.05, not_positive}});
-  check_entry_point("ConstitutiveSet::checked",
-                    concatenated(concatenated({solid_fraction, granular_temperature}, material), set_parameters),
-                    [&](const Values& v) {
-                      const auto c = set_of(v, 5).checked(v[0], v[1], material_of(v, 2));
-                      return c.radial_distribution + c.pressure + c.shear_viscosity + c.bulk_viscosity +
-                             c.conductivity + c.dissipation;
-                    });
-  check_entry_point(
+  check_entry_point<T>("ConstitutiveSet::checked",
+                       concatenated(concatenated({solid_fraction, granular_temperature}, material), set_parameters),
+                       [&](const ValuesOf<T>& v) {
+                         const auto c = set_of(v, 5).checked(v[0], v[1], material_of(v, 2));
+                         return c.radial_distribution + c.pressure + c.shear_viscosity + c.bulk_viscosity +
+                                c.conductivity + c.dissipation;
+                       });
+  check_entry_point<T>(
       "ConstitutiveSet::algebraic_granular_temperature_checked",
       concatenated(concatenated(concatenated({solid_fraction}, material), concatenated(strain_rate, {beta})),
                    set_parameters),
-      [&](const Values& v) {
+      [&](const ValuesOf<T>& v) {
         return set_of(v, 7).algebraic_granular_temperature_checked(v[0], material_of(v, 1), rate_of(v, 4), v[6]);
       });
 }
