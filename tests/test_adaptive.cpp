@@ -1,5 +1,5 @@
 // Adaptive inversion: boundary sets with round-off come out with the right number of nodes,
-// in any unit; genuine sets keep all their nodes; Gauss–Radau against the oracle (anchors §9).
+// in any unit; genuine sets keep all their nodes; Gauss–Radau against the 60-digit oracle.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -44,7 +44,7 @@ bool finite(const Quadrature<T, N>& q) {
 
 }  // namespace
 
-TEST_CASE("a single atom in SI units (anchors §9): one node at 2e-6 m, for any number of moments") {
+TEST_CASE("a single atom in SI units (weight 3.125e12 at 2e-6 m): one node, for any number of moments") {
   const std::vector<double> dirac{3.125e12, 6.25e6, 12.5, 2.5e-5, 5e-11, 1e-16, 2e-22, 4e-28};
   for (int count : {2, 4, 6, 8, 3, 5, 7}) {
     INFO(count << " moments");
@@ -85,7 +85,7 @@ TEST_CASE("two atoms given 6, 8, 10 moments: two nodes, the atoms") {
   }
 }
 
-TEST_CASE("the 4-class mixture of note §7.2 in µm and in m: four nodes from 8, 10, 12, 14, 16 moments") {
+TEST_CASE("the 4-class mixture of seed 000 Table 6.4 in µm and in m: four nodes from 8, 10, 12, 14, 16 moments") {
   const auto& oracle = MomentReference::instance();
   for (const std::string name : {"four_class", "four_class_si"}) {
     const double unit = name == "four_class" ? 1.0 : 1e-6;
@@ -236,7 +236,8 @@ TEST_CASE("Gauss–Radau with node 0 of uniform 0 to 1 from 11 moments: the orac
 }
 
 TEST_CASE("Gauss–Radau at the lower sieve aperture uses the odd moment, where it fails, Gauss") {
-  // Note §7.5(b) PSD, 7 moments, node fixed at the 45 µm aperture: 4 nodes reproducing M_0 … M_6.
+  // A 45–150 µm sieve cut (the oracle's sieve_psd), 7 moments, node fixed at the 45 µm
+  // aperture: 4 nodes reproducing M_0 … M_6.
   const std::array<double, 8> edges{45, 53, 63, 75, 90, 106, 125, 150};
   const std::array<double, 7> fractions{0.05, 0.10, 0.20, 0.30, 0.20, 0.10, 0.05};
   std::vector<double> m(7);

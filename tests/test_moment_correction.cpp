@@ -1,6 +1,8 @@
-// Correction of corrupted moment sets (seed 003; McGraw 2006): the single McGraw iterations of
-// note §7.6, the log-normal and monodisperse fallbacks, sets that must stay untouched, and
-// corrected sets that are realizable.
+// Correction of corrupted moment sets (seed 003; McGraw 2006): single McGraw iterations on a
+// corrupted mixture, the log-normal and monodisperse fallbacks, sets that must stay untouched,
+// and corrected sets that are realizable. The expected McGraw steps (k*, ln c, the corrected
+// moment) and log-normal fills are recomputed at 60 digits by an independent implementation in
+// tests/reference/moments_reference.py (mcgraw_checks).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -25,7 +27,8 @@ namespace {
 
 constexpr int capacity = 4;
 
-// Note §7.2: the 4-class mixture, moments computed exactly.
+// The 4-class mixture of seed 000 Table 6.4 (75, 103, 240, 355 µm; volume fractions 0.131,
+// 0.169, 0.190, 0.110), moments computed exactly.
 const std::array<double, 8> mixture{0.6,
                                     111.882,
                                     27336.546,
@@ -53,7 +56,7 @@ CorrectionResult<double, capacity> mcgraw(const std::array<double, L>& m, const 
 
 }  // namespace
 
-TEST_CASE("one McGraw iteration on the corrupted 4-class mixture: k* and ln c of note §7.6") {
+TEST_CASE("one McGraw iteration on the corrupted 4-class mixture: k* and ln c") {
   struct Case {
     int k;
     double factor, ln_c, corrected;
@@ -86,7 +89,7 @@ TEST_CASE("the full correction: McGraw where it restores realizability, the log-
   CHECK(seventh.realizable_moments == 8);
   CHECK(seventh.moments[7] == doctest::Approx(8.766108364e16).epsilon(1e-9));
   // M_3 × 0.7 and M_5 × 0.6: convex after McGraw but not realizable → the log-normal sharing
-  // the exact M_0, M_1, M_2 (note §7.6).
+  // the exact M_0, M_1, M_2.
   const double fill[] = {8751883.082, 3671417912, 2.018090257e12, 1.453522628e15, 1.371757858e18};
   for (const auto& corruption : {std::pair{3, 0.7}, std::pair{5, 0.6}, std::pair{4, 1.6}}) {
     const int k = corruption.first;
@@ -117,7 +120,7 @@ TEST_CASE("the full correction: McGraw where it restores realizability, the log-
   CHECK(first.realizable_moments == 8);
 }
 
-TEST_CASE("sets that must stay untouched: the log-normal of note §7.7, realizable sets, boundary sets") {
+TEST_CASE("sets that must stay untouched: a log-normal (median 100 µm, s = 0.3), realizable sets, boundary sets") {
   const double lognormal[] = {0.6,           62.761671594523,  7183.30417873086,  899581.50003406,
                               123265992.638633, 18481301093.5082, 3031854189938.32, 544215094071385};
   std::array<double, 8> m{};
@@ -152,7 +155,7 @@ TEST_CASE("sets that must stay untouched: the log-normal of note §7.7, realizab
   }
 }
 
-TEST_CASE("seed 003 printed sets: log-convex, so McGraw stops at once, the log-normal fill (note §7.6)") {
+TEST_CASE("seed 003 printed sets: log-convex, so McGraw stops at once, the log-normal fill") {
   const auto& a = MomentReference::instance().moments("seed003_A_printed");
   const auto r = correct_moments<double, capacity>(std::span<const double>(a.data(), 8));
   CHECK(r.iterations == 0);
@@ -255,7 +258,7 @@ TEST_CASE("corrections beyond the floating-point range: status failed and the mo
   const std::array<double, 4> spanning{1e300, 1e-300, 1, 1};
   as_given(correct(spanning), spanning);
 
-  // Note §7.2's mixture in metres with M_2 corrupted to 8e-323: ln c for M_2 is ~ +720, and
+  // The mixture in metres with M_2 corrupted to 8e-323: ln c for M_2 is ~ +720, and
   // c = e^720 overflows. McGraw alone fails; the full correction hands the set as given to the
   // fill, here monodisperse (M_0 M_2 < M_1²): M_k = M_0 r^k, r = M_1/M_0.
   std::array<double, 8> si{};

@@ -37,7 +37,9 @@ std::string name(RecurrenceAlgorithm a) { return a == RecurrenceAlgorithm::wheel
 
 }  // namespace
 
-TEST_CASE("three atoms: both algorithms give the note's recurrence and recover the atoms (seed note §7.1)") {
+TEST_CASE("three atoms at 1, 2, 5: both algorithms give the exact recurrence and recover the atoms") {
+  // Atoms (1, 0.2), (2, 0.5), (5, 0.3); their α, β and ζ to the digits below are checked at 60
+  // digits by moments_reference.py (case three_atoms).
   const std::array<double, 6> m{1, 2.7, 9.7, 41.7, 195.7, 953.7};
   for (RecurrenceAlgorithm a : algorithms) {
     INFO(name(a));
@@ -83,7 +85,7 @@ TEST_CASE("recurrences with exact closed forms: Laguerre (non-integer a), shifte
     const auto m = moments_by_ratio<16>(1.0L, [&](int k) { return theta * ((long double)(k) + 2.5L); });
     for (RecurrenceAlgorithm alg : algorithms) {
       const auto r = recurrence<double, 8>(std::span<const double>(m), alg);
-      REQUIRE(r.size == 8);  // textbook PD underflows from n = 5 here (anchors note §5.2)
+      REQUIRE(r.size == 8);  // textbook PD underflows from n = 5 here (recurrence.hpp)
       for (int k = 0; k < 8; ++k) {
         INFO(name(alg) << " k=" << k);
         CHECK(r.alpha[k] == doctest::Approx(1e-4 * (2 * k + 2.5)).epsilon(tolerance(k)));
@@ -102,7 +104,8 @@ TEST_CASE("recurrences with exact closed forms: Laguerre (non-integer a), shifte
       REQUIRE(r.size == 6);
       for (int k = 0; k < 6; ++k) {
         INFO(name(alg) << " k=" << k);
-        // A narrow measure far from 0 is the worst conditioned case (anchors note §5.2).
+        // A narrow measure far from 0 is the worst conditioned case: its coefficients are the
+        // differences of nearly equal moments.
         CHECK(r.alpha[k] == doctest::Approx(5.3).epsilon(1e-14 * std::pow(60.0, k)));
         if (k > 0) CHECK(r.beta[k] == doctest::Approx(0.49 * k).epsilon(1e-14 * std::pow(60.0, k)));
       }
@@ -110,7 +113,7 @@ TEST_CASE("recurrences with exact closed forms: Laguerre (non-integer a), shifte
   }
 }
 
-TEST_CASE("Gauss–Legendre on 0 to 1 from m_k = 1/(k+1) (exact rule, anchors note §9)") {
+TEST_CASE("Gauss–Legendre on 0 to 1 from m_k = 1/(k+1) (the exact rule, checked by moments_reference.py)") {
   std::array<double, 10> m{};
   for (int k = 0; k < 10; ++k) m[k] = 1.0 / (k + 1);
   const double x[] = {0.046910077030668004, 0.23076534494715845, 0.5, 0.76923465505284155, 0.953089922969332};
@@ -210,7 +213,7 @@ TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Di
   check({4.9e-324, 4.3e-4, 3.6e-7, 1.0e-10}, InversionStatus::invalid_input, 0, plus);
   check({1, 0, 1, 0}, InversionStatus::not_realizable, 0, plus);  // zero mean is not on (0, ∞)
   check({1, 0, 1, 0}, InversionStatus::ok, 2, line);              // ±1, weights 1/2
-  // A Dirac whose moments are not exact in binary (2e-6 m, anchors note §9) sits on the
+  // A Dirac whose moments are exact in decimal, not in binary (2e-6 m, weight 3.125e12) sits on the
   // boundary of moment space: ζ_2 = variance/mean is 0 only up to rounding, and its sign (so
   // the plain invert()'s node count) may change with the compiler's FMA contraction. The
   // adaptive inversion, with its relative boundary tolerance, is the entry point for that.
@@ -222,7 +225,7 @@ TEST_CASE("statuses: empty cell, NaN, infinity, negative mass, negative mean, Di
   CHECK(dirac.quadrature.weights[0] == 3.125e12);
 }
 
-TEST_CASE("the first failing Stieltjes coefficient is reported with its value (anchors note §1.7)") {
+TEST_CASE("the first failing Stieltjes coefficient is reported with its value") {
   // Uniform [0, 1] moments with m_3 := 0: ζ = 1/2, 1/6, −8/3.
   const std::array<double, 6> m{1, 0.5, 1.0 / 3, 0, 0.2, 1.0 / 6};
   for (RecurrenceAlgorithm alg : algorithms) {

@@ -1,6 +1,6 @@
 // Moment-set helpers: moments of quadratures and sieve analyses (seed 000 App. E), mean
 // diameters, VDF ↔ NDF moments, log-normal sets. References: the mpmath oracle
-// (moments_reference.csv), the seeds' note §7, and exact rationals.
+// (moments_reference.csv), figures the generator checks at 60 digits, and exact rationals.
 #include <doctest/doctest.h>
 
 #include <array>
@@ -21,18 +21,18 @@ using fluidbed::test::MomentReference;
 
 namespace {
 
-// Note §7.5(b): sieve apertures in µm and mass fractions.
+// A 45–150 µm sieve cut (the oracle's sieve_psd): apertures in µm and mass fractions.
 const std::array<double, 8> sieve_edges{45, 53, 63, 75, 90, 106, 125, 150};
 const std::array<double, 7> sieve_fractions{0.05, 0.10, 0.20, 0.30, 0.20, 0.10, 0.05};
 const SieveAnalysis<double> sieve{sieve_edges, sieve_fractions};
 
-// Note §7.5(a): one bin [100, 200] µm.
+// One bin [100, 200] µm (the oracle's sieve_one_bin).
 const std::array<double, 2> bin_edges{100, 200};
 const std::array<double, 1> bin_fraction{1};
 
 }  // namespace
 
-TEST_CASE("moments of a quadrature: the three atoms of note §7.1, and a round trip through invert") {
+TEST_CASE("moments of a quadrature: three atoms at 1, 2, 5, and a round trip through invert") {
   const std::array<double, 3> x{1, 2, 5}, w{0.2, 0.5, 0.3};
   std::array<double, 6> m{};
   moments_from_quadrature<double>(x, w, m);
@@ -46,7 +46,7 @@ TEST_CASE("moments of a quadrature: the three atoms of note §7.1, and a round t
   CHECK(quadrature_moment(r.quadrature, -1) == doctest::Approx(0.2 + 0.25 + 0.06).epsilon(1e-13));
 }
 
-TEST_CASE("sieve moments, one bin 100 to 200 µm: the exact rationals of note §7.5(a) and the oracle") {
+TEST_CASE("sieve moments, one bin 100 to 200 µm: exact rationals and the oracle") {
   const SieveAnalysis<double> one{bin_edges, bin_fraction};
   const double exact[] = {0.6, 90, 14000, 2250000, 372000000, 63000000000};
   for (int k = 0; k < 6; ++k) CHECK(sieve_moment(one, 0.4, k) == doctest::Approx(exact[k]).epsilon(4e-16));
@@ -62,7 +62,7 @@ TEST_CASE("sieve moments, one bin 100 to 200 µm: the exact rationals of note §
   CHECK(d10(one) == doctest::Approx(400.0 / 3).epsilon(1e-15));
 }
 
-TEST_CASE("sieve moments, note §7.5(b): M_0 … M_7, d43, d32, variance and Geldart's d_sv") {
+TEST_CASE("sieve moments of a 45–150 µm cut: M_0 … M_7, d43, d32, variance and Geldart's d_sv") {
   const auto& oracle = MomentReference::instance().moments("sieve_psd");
   std::array<double, 8> m{};
   sieve_moments(sieve, 0.4, std::span<double>(m));
@@ -73,7 +73,7 @@ TEST_CASE("sieve moments, note §7.5(b): M_0 … M_7, d43, d32, variance and Gel
   CHECK(d43<double>(m) == doctest::Approx(84.825).epsilon(1e-15));
   CHECK(d32(sieve) == doctest::Approx(MomentReference::instance().values("sieve_psd", 0, "d32")[0]).epsilon(1e-14));
   CHECK(d32(sieve) == doctest::Approx(79.48364158).epsilon(1e-10));
-  // M_{−1} itself (note §7.5b): 0.007548723084.
+  // M_{−1} itself: 0.007548723084 (from the oracle's exact logarithmic bin integrals).
   CHECK(sieve_moment(sieve, 0.4, -1) == doctest::Approx(0.007548723084).epsilon(1e-10));
   CHECK(variance<double>(m) == doctest::Approx(474.3860417).epsilon(1e-10));
   // Geldart (seed 000 eq. 6.1, arithmetic bin means): 0.25% above M_0/M_{−1}.
@@ -165,7 +165,7 @@ TEST_CASE("sieve moments: fractions are normalised, the pan, and the checked ent
   CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<float>{wide_float, one_float}, 0.5f, -3), std::domain_error);
 }
 
-TEST_CASE("Sauter diameters of the published 2-node quadratures: A 88.56 µm, B 272.3 µm (note §7.3)") {
+TEST_CASE("Sauter diameters of the published 2-node quadratures (seed 000 Table 6.2): A 88.56 µm, B 272.3 µm") {
   Quadrature<double, 2> a{{75, 103}, {0.262, 0.338}, 2};
   Quadrature<double, 2> b{{240, 355}, {0.380, 0.220}, 2};
   CHECK(d32(a) == doctest::Approx(88.56).epsilon(5e-5));
@@ -195,7 +195,7 @@ TEST_CASE("VDF ↔ NDF moments: M_k = (π/6) μ_{k+3}, and the class number dens
   CHECK(class_number_density(vdf[0], d) == doctest::Approx(n).epsilon(1e-15));
 }
 
-TEST_CASE("log-normal moment sets: note §7.7, and the set sharing M_0, M_1, M_2") {
+TEST_CASE("log-normal moment sets (m_0 = 0.6, median 100 µm, s = 0.3), and the set sharing M_0, M_1, M_2") {
   const double expected[] = {0.6,           62.761671594523,  7183.30417873086,  899581.50003406,
                              123265992.638633, 18481301093.5082, 3031854189938.32, 544215094071385};
   std::array<double, 8> m{};
@@ -205,8 +205,8 @@ TEST_CASE("log-normal moment sets: note §7.7, and the set sharing M_0, M_1, M_2
   const LognormalParameters<double> p = lognormal_matching(m[0], m[1], m[2]);
   CHECK(p.mu == doctest::Approx(std::log(100.0)).epsilon(1e-14));
   CHECK(p.sigma_squared == doctest::Approx(0.09).epsilon(1e-13));
-  // Note §7.6: the fill from the 4-class mixture's M_0, M_1, M_2: s² = 0.270264654551,
-  // e^μ = 162.9002485.
+  // The fill from the M_0, M_1, M_2 of the 4-class mixture of seed 000 Table 6.4:
+  // s² = 0.270264654551, e^μ = 162.9002485 (moments_reference.py, mcgraw_checks).
   const LognormalParameters<double> mix = lognormal_matching(0.6, 111.882, 27336.546);
   CHECK(mix.sigma_squared == doctest::Approx(0.270264654551).epsilon(1e-11));
   CHECK(std::exp(mix.mu) == doctest::Approx(162.9002485).epsilon(1e-9));

@@ -360,10 +360,11 @@ def measure_case(case, m, alpha, beta, Nmax, extra=None):
 
 
 # ----------------------------------------------------------------------------
-# self-checks of the tools against the notes (anchors-moments.md sec. 1.7, 9; seed note 7.7)
+# self-checks of the tools against published rules (Gauss-Legendre, Gauss-Hermite, Gauss-Laguerre
+# tables, to 15-17 digits) and exact identities
 # ----------------------------------------------------------------------------
 def tool_checks():
-    # uniform[0,1], Gauss-5 (anchors 1.7 / 9)
+    # uniform[0,1], Gauss-5
     a = [mpf(1) / 2] * 5
     b = [M(Fraction(k * k, 4 * (4 * k * k - 1))) for k in range(1, 5)]
     x, w = gauss_eig(a, b, 1)
@@ -373,7 +374,7 @@ def tool_checks():
     for wi, s in zip(w, ['0.11846344252809454', '0.23931433524968323', '0.28444444444444444']):
         printed(wi, s, 'Gauss-Legendre-5 weight')
     close(w[2], mpf(64) / 225, mpf(10) ** -50, 'GL5 middle weight 64/225')
-    # probabilists' Gauss-Hermite-10 (anchors 1.7 test 5)
+    # probabilists' Gauss-Hermite-10 (OpenQBMM's GQMOM test 5 uses the same rule)
     x, w = gauss_eig([mpf(0)] * 10, [mpf(k) for k in range(1, 10)], 1)
     ref = [('0.48493570751549765', '0.34464233493201904'), ('1.4659890943911582', '0.13548370298026774'),
            ('2.4843258416389546', '0.019111580500770286'), ('3.5818234835519269', '7.5807093431221767e-4'),
@@ -391,7 +392,7 @@ def tool_checks():
                          '0.045875854768068492']):
         printed(wi, s, 'N(5,1) 4-node weight')
     close(x[3], 5 + sqrt(3 + sqrt(6)), mpf(10) ** -50, 'N(5,1) closed form')
-    # Gauss-Laguerre (seed note 7.7), m_k = k!
+    # Gauss-Laguerre, m_k = k!
     lag = {2: [('0.585786437626905', '0.853553390593274'), ('3.4142135623731', '0.146446609406726')],
            3: [('0.415774556783479', '0.711093009929173'), ('2.29428036027904', '0.278517733569241'),
                ('6.28994508293748', '0.0103892565015861')],
@@ -402,12 +403,12 @@ def tool_checks():
         for i, (sx, sw) in enumerate(ref):
             printed(x[i], sx, 'Gauss-Laguerre-%d node' % N)
             printed(w[i], sw, 'Gauss-Laguerre-%d weight' % N)
-    # |x|^2 on [-1,1] (anchors 9): m_0 = 2/3, beta_1..9 by Wheeler on exact moments (zero mean)
+    # |x|^2 on [-1,1]: m_0 = 2/3, beta_1..9 by Wheeler on exact moments (zero mean)
     m = [M(Fraction(2, k + 3)) if k % 2 == 0 else mpf(0) for k in range(20)]
     _, bw = wheeler(m)
     for bk, s in zip(bw, ['3/5', '4/35', '25/63', '16/99', '49/143', '12/65', '27/85', '64/323', '121/399']):
         close(bk, M(Fraction(s)), mpf(10) ** -50, '|x|^2 beta')
-    # SI Dirac set (anchors 1.7 / 9)
+    # SI Dirac set: weight 3.125e12 at 2e-6 m
     for k, s in enumerate(['3.125e12', '6.25e6', '12.5', '2.5e-5', '5e-11']):
         close(mpf('3.125e12') * mpf('2e-6') ** k, mpf(s), mpf(10) ** -50, 'SI Dirac set')
     # uniform moments with m_3 := 0 -> zeta_3 = -8/3
@@ -525,7 +526,7 @@ def case_lognormal():
     ref_m = ['0.6', '62.761671594523', '7183.30417873086', '899581.50003406', '123265992.638633',
              '18481301093.5082', '3031854189938.32', '544215094071385']
     for k, sref in enumerate(ref_m):
-        printed(m[k] * um ** k, sref, 'lognormal M_%d in um (note 7.7)' % k)
+        printed(m[k] * um ** k, sref, 'lognormal M_%d in um' % k)
     ref = {2: [('84.3085669692', '0.428665621879'), ('155.377383085', '0.171334378121')],
            3: [('73.4578033964', '0.271171282103'), ('125.232271619', '0.309998641156'),
                ('213.498377705', '0.0188300767407')],
@@ -541,8 +542,8 @@ def case_lognormal():
             close(a_, b_, mpf(10) ** -40, 'lognormal weights Wheeler vs closed form')
         if N in ref:
             for i, (sx, sw) in enumerate(ref[N]):
-                printed(x[i] * um, sx, 'lognormal N=%d node in um (note 7.7)' % N)
-                printed(w[i], sw, 'lognormal N=%d weight (note 7.7)' % N)
+                printed(x[i] * um, sx, 'lognormal N=%d node in um' % N)
+                printed(w[i], sw, 'lognormal N=%d weight' % N)
     measure_case('lognormal_si', m, alpha, beta, Nmax, extra)
 
 
@@ -604,7 +605,7 @@ def atoms_case(case, xs, ws, Nmax=None, extra=None):
 
 
 def case_atoms():
-    # seed note 7.1
+    # three atoms (1, 0.2), (2, 0.5), (5, 0.3): exact recovery; alpha, beta, zeta to 12 digits
     def extra3(N, x, w):
         if N == 3:
             for xi, s in zip(x, ['1', '2', '5']):
@@ -612,16 +613,16 @@ def case_atoms():
     m, a, b, _ = atoms_case('three_atoms', [Fraction(1), Fraction(2), Fraction(5)],
                             [Fraction('0.2'), Fraction('0.5'), Fraction('0.3')], extra=extra3)
     for k, s in enumerate(['1', '2.7', '9.7', '41.7', '195.7', '953.7']):
-        close(m[k], mpf(s), mpf(10) ** -55, 'three_atoms moments (note 7.1)')
+        close(m[k], mpf(s), mpf(10) ** -55, 'three_atoms moments')
     for v, s in zip(a, ['2.7', '3.7356846473', '1.5643153527']):
-        printed(v, s, 'three_atoms alpha (note 7.1)')
+        printed(v, s, 'three_atoms alpha')
     for v, s in zip(b, ['2.41', '0.743788846611']):
-        printed(v, s, 'three_atoms beta (note 7.1)')
+        printed(v, s, 'three_atoms beta')
     for v, s in zip(zeta_from_rc(a, b), ['2.7', '0.892592592593', '2.84309205471', '0.261612649994',
                                          '1.3027027027']):
-        printed(v, s, 'three_atoms zeta (note 7.1)')
+        printed(v, s, 'three_atoms zeta')
 
-    # seed note 7.2 (000's theoretical 4-class mixture), um and SI
+    # seed 000 Table 6.4's theoretical 4-class mixture, um and SI
     xs = [Fraction(75), Fraction(103), Fraction(240), Fraction(355)]
     ws = [Fraction('0.131'), Fraction('0.169'), Fraction('0.190'), Fraction('0.110')]
     ref = {2: [('101.744236314', '0.360296075378'), ('313.820272581', '0.239703924622')],
@@ -632,17 +633,17 @@ def case_atoms():
         def f(N, x, w):
             if N in ref:
                 for i, (sx, sw) in enumerate(ref[N]):
-                    printed(x[i] * scale, sx, 'four_class N=%d node (note 7.2)' % N)
-                    printed(w[i], sw, 'four_class N=%d weight (note 7.2)' % N)
+                    printed(x[i] * scale, sx, 'four_class N=%d node' % N)
+                    printed(w[i], sw, 'four_class N=%d weight' % N)
         return f
     m, a, b, _ = atoms_case('four_class', xs, ws, extra=extra4(1))
     for k, s in enumerate(['0.6', '111.882', '27336.546', '7787772.738', '2400593489.514',
                            '773763737732.442', '256707038452879.03', '8.6898018074014352e16']):
-        printed(m[k], s, 'four_class M_%d (note 7.2)' % k)
+        printed(m[k], s, 'four_class M_%d' % k)
     printed(a[0], '186.47', 'four_class alpha_0')
     printed(a[1], '229.0945089', 'four_class alpha_1')
     printed(b[0], '10789.8491', 'four_class beta_1')
-    # rounded mass fractions variant of note 7.2 (asserted only)
+    # the same with Table 6.4's rounded mass fractions (asserted only)
     w2 = [mpf('0.6') * mpf(s) for s in ['0.218', '0.282', '0.317', '0.183']]
     m2 = moments_atoms([M(v) for v in xs], w2, 4)
     for k, s in enumerate(['0.6', '111.8646', '27323.8578', '7781723.9334']):
@@ -699,7 +700,7 @@ def case_sieve():
         ['0.05', '0.10', '0.20', '0.30', '0.20', '0.10', '0.05'], '0.4', 4)
     for k, s in enumerate(['0.6', '50.895', '4601.8', '442375.8525', '45041131.716', '4833551588.09',
                            '543648299015', '6.37032573041e13']):
-        printed(m[k], s, 'sieve_psd M_%d (note 7.5b)' % k)
+        printed(m[k], s, 'sieve_psd M_%d' % k)
     ref = {2: [('68.64569475', '0.3866458202'), ('114.1455446', '0.2133541798')],
            3: [('58.96296816', '0.1914477368'), ('90.33063789', '0.3447659121'),
                ('132.6890202', '0.06378635107')],
@@ -707,8 +708,8 @@ def case_sieve():
                ('107.151683', '0.1629414408'), ('140.7429108', '0.02906673462')]}
     for N, r in ref.items():
         for i, (sx, sw) in enumerate(r):
-            printed(res[N][0][i], sx, 'sieve_psd N=%d node (note 7.5b)' % N)
-            printed(res[N][1][i], sw, 'sieve_psd N=%d weight (note 7.5b)' % N)
+            printed(res[N][0][i], sx, 'sieve_psd N=%d node' % N)
+            printed(res[N][1][i], sw, 'sieve_psd N=%d weight' % N)
     printed(d43, '84.825', 'sieve_psd d43')
     printed(Mm1, '0.007548723084', 'sieve_psd M_-1')
     printed(d32, '79.48364158', 'sieve_psd d32')
@@ -718,19 +719,19 @@ def case_sieve():
 
     m, mex, res, d43, Mm1, d32, dsv = sieve_case('sieve_one_bin', [100, 200], ['1'], '0.4', 4)
     for k, s in enumerate(['3/5', '90', '14000', '2250000', '372000000', '63000000000']):
-        check(mex[k] == Fraction(s), 'sieve_one_bin exact M_%d (note 7.5a)' % k)
+        check(mex[k] == Fraction(s), 'sieve_one_bin exact M_%d' % k)
     x, w = res[2]
     close(x[0], 150 - 50 / sqrt(3), mpf(10) ** -50, 'one bin N=2 node')
     close(x[1], 150 + 50 / sqrt(3), mpf(10) ** -50, 'one bin N=2 node')
     close(w[0], mpf('0.3'), mpf(10) ** -50, 'one bin N=2 weight')
     x, w = res[3]
     for xi, s in zip(x, ['111.270166538', '150', '188.729833462']):
-        printed(xi, s, 'one bin N=3 node (note 7.5a)')
+        printed(xi, s, 'one bin N=3 node')
     for wi, s in zip(w, [Fraction(1, 6), Fraction(4, 15), Fraction(1, 6)]):
-        close(wi, M(s), mpf(10) ** -50, 'one bin N=3 weight (note 7.5a)')
+        close(wi, M(s), mpf(10) ** -50, 'one bin N=3 weight')
 
 
-SEED003 = {   # note 6.3-6.5: (nodes um, weights) as printed
+SEED003 = {   # seed 000 Table 6.2, seed 003 Tables 1-2: (nodes um, weights) as printed
     'A': {2: ([75, 103], ['0.262', '0.338']),
           3: ([61, 89, 112], ['0.069', '0.400', '0.131']),
           4: ([52, 77, 98, 119], ['0.018', '0.214', '0.318', '0.050'])},
@@ -758,7 +759,7 @@ def case_seed003():
                                     [Fraction(v) for v in ws])
             check(sum(Fraction(v) for v in ws) == Fraction('0.6'), 'seed003 weights sum to 0.6')
             fwd[(p, N)] = moments_atoms([M(Fraction(v)) for v in xs], [M(Fraction(v)) for v in ws], 8)
-    # note 7.3: relative differences forward vs printed moments (in %)
+    # the published rules' moments against the printed moments: relative differences (in %)
     pm = {p: [mpf(s) for s in v] for p, v in SEED003_PRINTED.items()}
 
     def rel(p, N, k):
@@ -766,38 +767,40 @@ def case_seed003():
     for (p, N, k, s) in [('A', 2, 1, '-0.07'), ('A', 2, 2, '-0.01'), ('A', 2, 3, '-0.44'),
                          ('B', 2, 1, '-0.41'), ('B', 2, 2, '-0.37'), ('B', 2, 3, '-0.69'),
                          ('mix', 2, 1, '+0.29'), ('mix', 2, 2, '+0.81'), ('mix', 2, 3, '+0.94')]:
-        printed(rel(p, N, k), s, 'note 7.3 %s %d-node M_%d rel. diff %%' % (p, N, k))
-    # note 7.3 "within x%" statements are upper bounds; A 3-node is stated for M_0..M_5, the
+        printed(rel(p, N, k), s, '%s %d-node M_%d rel. diff %%' % (p, N, k))
+    # the "within x%" figures are upper bounds; A 3-node is stated for M_0..M_5, the
     # others only hold when all 8 printed moments are included (B 3-node: 0.214% over M_0..M_5,
     # 0.947% over M_0..M_7; mix 3-node: 0.651% vs 1.398%), see README
     for (p, N, K, s) in [('A', 3, 6, '0.21'), ('A', 4, 8, '1.4'), ('B', 3, 8, '0.95'), ('B', 4, 8, '0.91'),
                          ('mix', 3, 8, '1.4'), ('mix', 4, 8, '1.2')]:
         mx = max(fabs(rel(p, N, k)) for k in range(K))
         check(mx <= mpf(s) and mx > mpf(s) - mpf('0.06'),
-              'note 7.3 %s %d-node max rel. diff %s%% vs bound %s%%' % (p, N, nstr(mx, 4), s))
+              '%s %d-node max rel. diff %s%% vs bound %s%%' % (p, N, nstr(mx, 4), s))
     for p, s in [('A', '88.56'), ('B', '272.3'), ('mix', '148.4')]:
         xs, ws = SEED003[p][2]
         printed(sum(M(Fraction(v)) for v in ws) / sum(M(Fraction(w)) / x for x, w in zip(xs, ws)), s,
-                'note 7.3 Sauter %s 2-node' % p)
+                'Sauter %s 2-node' % p)
 
-    # printed (rounded) 8-moment sets: only moments are known -> inversion at 60 digits
-    note_zeta = {'A': ['90.8333', '2.0107', '111.415', '-44.6102', '-66.0821', '78.988', '19.2156'],
-                 'B': ['283.333', '9.60784', '374.406', '-99.4362', '-225.449', '368.961', '-76.3839'],
-                 'mix': ['193.333', '49.7701', '170.522', '27.2848', '399.774', '-196.365', '-381.77']}
-    note_first = {'A': 4, 'B': 4, 'mix': 6}
-    note_h0 = {'A': ['0.6', '65.75', '-3.5811e7', '-1.01808e17'],
-               'B': ['0.6', '980', '-5.9592e10', '-3.01424e23'],
-               'mix': ['0.6', '3464', '9.3048e10', '-1.96207e23']}
-    note_h1 = {'A': ['54.5', '6.654e5', '2.3949e13', '1.3083e24'],
-               'B': ['170', '1.0396e8', '1.4252e18', '-5.5064e32'],
-               'mix': ['116', '1.142e8', '1.22634e18', '9.8723e32']}
-    note_d2 = {'A': ['0.0218947', '0.0256566', '0.0169777', '0.0186836', '0.0172602', '0.0170393'],
-               'B': ['0.0333478', '0.0410639', '0.03404', '0.0351392', '0.0353529', '0.0312906'],
-               'mix': ['0.229071', '0.134185', '0.0709952', '0.0469622', '0.0344053', '0.0354173']}
-    note_rules = {('A', 2): [('84.5157', '0.4924'), ('119.743', '0.1076')],
-                  ('B', 2): [('261.173', '0.5083'), ('406.174', '0.091698')],
-                  ('mix', 2): [('107.798', '0.34084'), ('305.828', '0.25916')],
-                  ('mix', 3): [('101.373', '0.31292'), ('288.206', '0.27763'), ('451.105', '0.0094535')]}
+    # printed (rounded) 8-moment sets: only moments are known -> inversion at 60 digits. The
+    # expected_* figures were computed independently (50-digit PD and Wheeler) when seed 003 was
+    # read; the 60-digit values here must round to them.
+    expected_zeta = {'A': ['90.8333', '2.0107', '111.415', '-44.6102', '-66.0821', '78.988', '19.2156'],
+                     'B': ['283.333', '9.60784', '374.406', '-99.4362', '-225.449', '368.961', '-76.3839'],
+                     'mix': ['193.333', '49.7701', '170.522', '27.2848', '399.774', '-196.365', '-381.77']}
+    expected_first = {'A': 4, 'B': 4, 'mix': 6}
+    expected_h0 = {'A': ['0.6', '65.75', '-3.5811e7', '-1.01808e17'],
+                   'B': ['0.6', '980', '-5.9592e10', '-3.01424e23'],
+                   'mix': ['0.6', '3464', '9.3048e10', '-1.96207e23']}
+    expected_h1 = {'A': ['54.5', '6.654e5', '2.3949e13', '1.3083e24'],
+                   'B': ['170', '1.0396e8', '1.4252e18', '-5.5064e32'],
+                   'mix': ['116', '1.142e8', '1.22634e18', '9.8723e32']}
+    expected_d2 = {'A': ['0.0218947', '0.0256566', '0.0169777', '0.0186836', '0.0172602', '0.0170393'],
+                   'B': ['0.0333478', '0.0410639', '0.03404', '0.0351392', '0.0353529', '0.0312906'],
+                   'mix': ['0.229071', '0.134185', '0.0709952', '0.0469622', '0.0344053', '0.0354173']}
+    expected_rules = {('A', 2): [('84.5157', '0.4924'), ('119.743', '0.1076')],
+                      ('B', 2): [('261.173', '0.5083'), ('406.174', '0.091698')],
+                      ('mix', 2): [('107.798', '0.34084'), ('305.828', '0.25916')],
+                      ('mix', 3): [('101.373', '0.31292'), ('288.206', '0.27763'), ('451.105', '0.0094535')]}
     for p in ['A', 'B', 'mix']:
         case = 'seed003_%s_printed' % p
         m = pm[p]
@@ -809,26 +812,26 @@ def case_seed003():
         for k in range(7):
             close(zw[k], zh[k], mpf(10) ** -50, '%s zeta_%d Wheeler vs Hankel' % (case, k + 1))
             close(zp[k], zh[k], mpf(10) ** -50, '%s zeta_%d PD vs Hankel' % (case, k + 1))
-            printed(zh[k], note_zeta[p][k], '%s zeta_%d (note 7.4)' % (case, k + 1))
+            printed(zh[k], expected_zeta[p][k], '%s zeta_%d' % (case, k + 1))
         for j in range(4):
-            printed(hankel(m, 2 * j), note_h0[p][j], '%s Hankel a=0 %dx%d (note 7.4)' % (case, j + 1, j + 1))
-            printed(hankel(m, 2 * j + 1), note_h1[p][j], '%s Hankel a=1 %dx%d (note 7.4)' % (case, j + 1, j + 1))
+            printed(hankel(m, 2 * j), expected_h0[p][j], '%s Hankel a=0 %dx%d' % (case, j + 1, j + 1))
+            printed(hankel(m, 2 * j + 1), expected_h1[p][j], '%s Hankel a=1 %dx%d' % (case, j + 1, j + 1))
         for k in range(6):
-            printed(log(m[k]) - 2 * log(m[k + 1]) + log(m[k + 2]), note_d2[p][k],
-                    '%s ln M second difference %d (note 7.4)' % (case, k))
+            printed(log(m[k]) - 2 * log(m[k + 1]) + log(m[k + 2]), expected_d2[p][k],
+                    '%s ln M second difference %d' % (case, k))
         write_hankel(case, m)
         first = next((k + 1 for k, v in enumerate(zh) if v <= 0), 0)
-        check(first == note_first[p], '%s first unrealizable zeta index %d' % (case, first))
+        check(first == expected_first[p], '%s first unrealizable zeta index %d' % (case, first))
         for N in range(1, 5):
             a, b = aw[:N], bw[:N - 1]
             realizable = all(v > 0 for v in zh[:2 * N - 1])
             if realizable:
                 x, w = gauss_eig(a, b, m[0])
                 verify_rule(x, w, m, 2 * N, '%s N=%d' % (case, N))
-                if (p, N) in note_rules:
-                    for i, (sx, sw) in enumerate(note_rules[(p, N)]):
-                        printed(x[i], sx, '%s N=%d node (note 7.4)' % (case, N))
-                        printed(w[i], sw, '%s N=%d weight (note 7.4)' % (case, N))
+                if (p, N) in expected_rules:
+                    for i, (sx, sw) in enumerate(expected_rules[(p, N)]):
+                        printed(x[i], sx, '%s N=%d node' % (case, N))
+                        printed(w[i], sw, '%s N=%d weight' % (case, N))
                 write_rule(case, N, a, b, x, w, m)
             else:
                 for k in range(N):
@@ -890,6 +893,59 @@ def case_hankel_boundary():
     check(hankel([mpf(v) for v in sets['hankel_zeta3_zero']], 5) == -4, 'zeta_3 = 0 set: H_5 = -4')
 
 
+def mcgraw_step(m, first=1):
+    """One least-squares McGraw step on ln m (McGraw 2006 as seed 003 describes it): the moment
+    k* >= first whose change most reduces the third differences d of ln m, and ln c for it."""
+    ell = [log(v) for v in m]
+    L = len(m)
+    d = [ell[j + 3] - 3 * ell[j + 2] + 3 * ell[j + 1] - ell[j] for j in range(L - 3)]
+    dd = sum(v * v for v in d)
+    coefficient = [-1, 3, -3, 1]
+    best = None
+    for k in range(first, L):
+        bb = bd = mpf(0)
+        for j in range(max(0, k - 3), min(k, L - 4) + 1):
+            b = coefficient[k - j]
+            bb += b * b
+            bd += b * d[j]
+        cos2 = bd * bd / (bb * dd)
+        if best is None or cos2 >= best[0]:
+            best = (cos2, k, -bd / bb)
+    return best[1], best[2]
+
+
+def lognormal_fill(m0, m1, m2, K):
+    """M_k = M_0 r^k q^(k(k-1)/2), r = M_1/M_0, q = M_0 M_2/M_1^2 (seed 003's fallback)."""
+    r, q = m1 / m0, m0 * m2 / m1 ** 2
+    return [m0 * r ** k * q ** (k * (k - 1) // 2) for k in range(K)]
+
+
+def mcgraw_checks():
+    """The McGraw steps and log-normal fills that tests/test_moment_correction.cpp and
+    test_moment_sets.cpp expect, recomputed at 60 digits (asserted only, no rows)."""
+    x = [mpf(75), mpf(103), mpf(240), mpf(355)]
+    w = [mpf('0.131'), mpf('0.169'), mpf('0.190'), mpf('0.110')]
+    mix = moments_atoms(x, w, 8)
+    for k, factor, ln_c, corrected in [(3, '0.7', '0.355644081', '7779748.745'), (5, '0.6', '0.511517369', '7.742991704e11'),
+                                       (7, '0.5', '0.701890012', '8.766108364e16'), (2, '0.8', '0.214713110', '27107.05557'),
+                                       (4, '1.6', '-0.469470149', '2401874500'), (1, '1.3', '-0.234822071', '115.0063033')]:
+        m = list(mix)
+        m[k] *= mpf(factor)
+        best, c = mcgraw_step(m)
+        check(best == k, 'McGraw picks M_%d (x %s), not M_%d' % (k, factor, best))
+        printed(c, ln_c, 'McGraw ln c for M_%d x %s' % (k, factor))
+        printed(m[k] * exp(c), corrected, 'McGraw corrected M_%d' % k)
+    fill = lognormal_fill(mix[0], mix[1], mix[2], 8)
+    for k, v in zip(range(3, 8), ['8751883.082', '3671417912', '2.018090257e12', '1.453522628e15', '1.371757858e18']):
+        printed(fill[k], v, 'four_class log-normal fill M_%d' % k)
+    s2 = log(mix[0] * mix[2] / mix[1] ** 2)
+    printed(s2, '0.270264654551', 'four_class fill s^2')
+    printed(exp(log(mix[1] / mix[0]) - s2 / 2), '162.9002485', 'four_class fill e^mu')
+    a = [mpf(v) for v in SEED003_PRINTED['A']]
+    for k, v in zip(range(3, 8), ['480190', '4.65784e7', '4.61812e9', '4.68009e11', '4.84788e13']):
+        printed(lognormal_fill(a[0], a[1], a[2], 8)[k], v, 'seed 003 powder A log-normal fill M_%d' % k)
+
+
 def case_radau():
     case = 'radau_legendre01'
     N = 6
@@ -908,10 +964,10 @@ def case_radau():
     close(w[0], mpf(1) / 36, mpf(10) ** -50, 'Radau w(0) = 1/36')
     for xi, s in zip(x[1:], ['0.098535085798826426', '0.30453572664636391', '0.56202518975261386',
                              '0.80198658212639183', '0.96019014294853126']):
-        printed(xi, s, 'Radau-6 node (anchors 9)')
+        printed(xi, s, 'Radau-6 node')
     for wi, s in zip(w[1:], ['0.15982037661025548', '0.24269359423448496', '0.26046339159478749',
                              '0.20845066715595387', '0.10079419262674042']):
-        printed(wi, s, 'Radau-6 weight (anchors 9)')
+        printed(wi, s, 'Radau-6 weight')
     for i in range(N):
         row(case, N, 'node', i, x[i])
     for i in range(N):
@@ -969,6 +1025,7 @@ def main():
     case_sieve()
     case_seed003()
     case_hankel_boundary()
+    mcgraw_checks()
     case_radau()
     case_random_jacobi()
     path = os.path.join(HERE, 'moments_reference.csv')
