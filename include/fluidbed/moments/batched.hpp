@@ -44,6 +44,8 @@
 #include "realizability.hpp"
 #include "recurrence.hpp"
 
+FLUIDBED_EIGEN_CODE_BEGIN
+
 namespace fluidbed::moments {
 
 // Read-only view of the moments of a batch of cells: moment k of cell c is moments[k][c]. The
@@ -360,5 +362,7 @@ template <class T, int N>
 }
 
 }  // namespace fluidbed::moments
+
+FLUIDBED_EIGEN_CODE_END
 
 #undef FLUIDBED_BATCHED_FLATTEN

@@ -35,6 +35,8 @@
 #include "realizability.hpp"
 #include "recurrence.hpp"
 
+FLUIDBED_EIGEN_CODE_BEGIN
+
 namespace fluidbed::moments {
 
 // Nodes (ascending) and weights of the r.size-point Gauss rule of r, by Eigen's tridiagonal
@@ -85,3 +87,5 @@ InversionResult<T, N> invert_eigen(const std::array<T, 2 * N>& m, const Inversio
 }
 
 }  // namespace fluidbed::moments
+
+FLUIDBED_EIGEN_CODE_END
