@@ -134,7 +134,9 @@ TEST_CASE("out of domain: corrupted sets are corrected or reported as failed, ne
       {"correct_moments", [](std::span<const double> m) { return correct_moments<double, nodes>(m); }},
       {"mcgraw_correct", [](std::span<const double> m) { return mcgraw_correct<double, nodes>(m); }},
   };
-  for (const auto& [name, correct] : corrections) {
+  for (const auto& entry : corrections) {
+    const std::string& name = entry.first;  // (clang 14 lambdas, as INFO's, cannot capture a structured binding)
+    const Correct& correct = entry.second;
     INFO("entry point: ", name);
     CHECK(correct(view(powder)).status == CorrectionStatus::unchanged);
     for (std::size_t k = 0; k < powder.size(); ++k) {
