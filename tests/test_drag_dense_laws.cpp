@@ -484,8 +484,10 @@ TEST_CASE("Beetstra polydisperse: monodisperse, split and total-drag identities"
   // An absent species has no drag.
   const auto m = mixture({0.3, 0.0}, {5e-4, 1e-3});
   CHECK(published(species_state(m, 1, 0.4)).classical() == 0.0);
-  CHECK(test::same_arithmetic(published(species_state(m, 0, 0.4)).pressure_gradient(),
-                             Beetstra2007{}(state(0.7, 0.4)).pressure_gradient()));
+  // The same operations on the same numbers, but clang -O3 folds one path's pow at compile time
+  // and calls libm on the other: equal to an ulp or two, not to the bit.
+  CHECK(published(species_state(m, 0, 0.4)).pressure_gradient() ==
+        doctest::Approx(Beetstra2007{}(state(0.7, 0.4)).pressure_gradient()).epsilon(4e-16));
 }
 
 TEST_CASE("Beetstra polydisperse agrees with the independent mpmath table (polydisperse_reference.csv)") {

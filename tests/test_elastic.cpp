@@ -47,9 +47,12 @@ TEST_CASE("the functions n_e, N, C, D, H of Table 3.1 agree with the mpmath refe
     const double voidage = table.number(row, "voidage"), re_star = table.number(row, "re_star");
     INFO("voidage " << voidage << ", Re* " << re_star);
     const auto f = mazzei_lettieri_functions(voidage, re_star);
-    for (const auto& [column, value] : {std::pair{"n_e", f.exponent}, std::pair{"N", f.exponent_slope},
-                                        std::pair{"C", f.reynolds_factor}, std::pair{"D", f.drag_factor},
-                                        std::pair{"H", f.voidage_sensitivity}}) {
+    for (const auto& entry : {std::pair{"n_e", f.exponent}, std::pair{"N", f.exponent_slope},
+                              std::pair{"C", f.reynolds_factor}, std::pair{"D", f.drag_factor},
+                              std::pair{"H", f.voidage_sensitivity}}) {
+      // named copies, not a structured binding: clang before 16 cannot capture one (INFO does)
+      const char* column = entry.first;
+      const double value = entry.second;
       INFO(column);
       const double expected = table.number(row, column);
       const double error = expected == 0 ? std::abs(value) : relative_difference(value, expected);

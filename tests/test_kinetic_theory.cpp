@@ -63,7 +63,8 @@ TEST_CASE("pressure, viscosities, conductivity and dissipation agree with the mp
     const std::string function = table.text(row, "function");
     if (function == "radial_distribution" || function == "algebraic_granular_temperature") continue;
     ++rows;
-    const auto [author, rdf] = test::split_variant(table.text(row, "variant"));
+    const auto variant = test::split_variant(table.text(row, "variant"));
+    const std::string &author = variant.first, &rdf = variant.second;  // clang < 16 captures no structured binding
     const double phi = table.number(row, "solid_fraction"), theta = table.number(row, "granular_temperature");
     const GranularMaterial<double> m{table.number(row, "diameter"), table.number(row, "particle_density"),
                                      table.number(row, "restitution")};
@@ -101,7 +102,8 @@ TEST_CASE("the algebraic granular temperature in simple shear agrees with the mp
   for (std::size_t row = 0; row < table.size(); ++row) {
     if (table.text(row, "function") != "algebraic_granular_temperature") continue;
     ++rows;
-    const auto [author, rdf] = test::split_variant(table.text(row, "variant"));
+    const auto variant = test::split_variant(table.text(row, "variant"));
+    const std::string &author = variant.first, &rdf = variant.second;  // clang < 16 captures no structured binding
     const double phi = table.number(row, "solid_fraction"), shear_rate = table.number(row, "extra");
     const GranularMaterial<double> m{table.number(row, "diameter"), table.number(row, "particle_density"),
                                      table.number(row, "restitution")};

@@ -138,9 +138,10 @@ TEST_CASE("Re* over every finite state: the Newton (n → 2.4) and Stokes (n →
 TEST_CASE("Re* where n(Re*) is a step of height 2.4 |ln ε| (ε ≪ 1): the root of eq. 3.53 to rounding, no cycling") {
   // ε = 2.3e-9, Re = 2.1e-37: Halley's iteration alone cycles here between the two flat parts of
   // n; the safeguarded one must still return the root of x + n(eˣ) ln ε = ln Re.
-  for (const auto& [re, eps] : {std::pair{2.1322746435998335e-37, 2.3217596236941965e-09},
-                                std::pair{6.3912104805310214e-91, 6.3937804997894256e-37},
-                                std::pair{2.9973843420186996e-133, 1.834351405783779e-54}}) {
+  for (const auto& state : {std::pair{2.1322746435998335e-37, 2.3217596236941965e-09},
+                            std::pair{6.3912104805310214e-91, 6.3937804997894256e-37},
+                            std::pair{2.9973843420186996e-133, 1.834351405783779e-54}}) {
+    const double re = state.first, eps = state.second;  // named copies: clang < 16 captures no structured binding
     const auto r = settling::detail::solve_terminal_reynolds(re, eps);
     const double x = r.log_terminal_reynolds, log_eps = std::log(eps);
     const double n = 2.4 + 2.4 / (1 + 0.175 * std::exp(0.75 * x));  // seed 000 eq. 3.24

@@ -130,7 +130,8 @@ TEST_CASE_TEMPLATE("every settling function and the equilibrium of every drag la
     CHECK(e <= (chained(row.closure) ? chained_tolerance : tolerance));
     (chained(row.closure) ? worst_chained : worst).record(e, row.closure);
   }
-  for (const auto& [name, function] : quantities) CHECK_MESSAGE(seen.count(name) == 1, name << " has no rows");
+  for (const auto& quantity : quantities)
+    CHECK_MESSAGE(seen.count(quantity.first) == 1, quantity.first << " has no rows");
   MESSAGE("worst " << double(worst.epsilons) << " eps (" << worst.where << "), chained "
                    << double(worst_chained.epsilons) << " eps (" << worst_chained.where << ")");
 }
@@ -154,7 +155,8 @@ TEST_CASE_TEMPLATE("Syamlal-O'Brien calibrated from minimum fluidization holds t
                    FLUIDBED_SCALAR_TYPES) {
   const Fluid<T> water{T(1000), T(9.765625e-4L)};
   const Particles<T> sand{T(2500), T(2.44140625e-4L)};
-  for (const auto& [voidage, velocity] : {std::pair{T(0.4375L), T(0.001953125L)}, std::pair{T(0.875L), T(0.015625L)}}) {
+  for (const auto& state : {std::pair{T(0.4375L), T(0.001953125L)}, std::pair{T(0.875L), T(0.015625L)}}) {
+    const T voidage = state.first, velocity = state.second;  // clang < 16 captures no structured binding
     const drag::SyamlalOBrien law = drag::SyamlalOBrien::from_minimum_fluidization(velocity, voidage, water, sand);
     INFO("eps_mf " << double(voidage) << ": c1 " << law.c1() << ", d1 " << law.d1());
     const T equilibrium = required(equilibrium_voidage(law, velocity, water, sand));

@@ -360,7 +360,7 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
   }
   const int peak = int(std::max_element(value.begin(), value.end()) - value.begin());
   StabilityTransition<T> out;
-  out.maximum_voidage = voidage[peak];  // the maximum at an end of the interval
+  out.maximum_voidage = voidage[peak];  // the largest sample: the maximum where it lies at an end of the interval
   out.maximum_stability = value[peak];
   if (peak > 0 && peak + 1 < samples) {
     const T left = voidage[peak - 1], right = voidage[peak + 1];
