@@ -1,8 +1,10 @@
 // Test helper: the kinetic-theory closures by the names the mpmath tables in
-// tests/reference/ use (ktgf_*.csv), evaluated for any scalar (double or Dual).
+// tests/reference/ use (ktgf_*.csv, scalar_types_reference.csv), evaluated for any scalar
+// (float, double, long double, or a Dual of them).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -42,11 +44,24 @@ S row_radial_distribution(const std::string& rdf, const S& phi) {
   return radial_distribution(rdf, phi, 0.63);
 }
 
+// The names radial_distribution dispatches: every one-class form of the library.
+inline constexpr std::array radial_distribution_names{"carnahan_starling", "percus_yevick", "lun_savage",
+                                                      "sinclair_jackson",  "ogawa",         "gidaspow",
+                                                      "ma_ahmadi",         "lathouwers_bellan"};
+
+// The "function:author" names constitutive dispatches: every law(φ, Θ, g0, material) of the
+// library (the kinetic and collisional parts of a transport coefficient are not listed).
+inline constexpr std::array constitutive_names{
+    "granular_pressure:lun",    "granular_pressure:syamlal_rogers_obrien", "granular_pressure:ma_ahmadi",
+    "shear_viscosity:gidaspow", "shear_viscosity:syamlal",                "shear_viscosity:hrenya_sinclair",
+    "bulk_viscosity:lun",       "conductivity:gidaspow",                  "conductivity:syamlal",
+    "conductivity:hrenya_sinclair", "dissipation:lun"};
+
 // Constitutive function `function` of author `author` (the part of the variant before
 // ':'); `extra` is the Hrenya–Sinclair length L where it applies.
-template <class S>
+template <class S, class T>
 S constitutive(const std::string& function, const std::string& author, const S& phi, const S& theta, const S& g0,
-               const GranularMaterial<double>& m, double extra) {
+               const GranularMaterial<T>& m, double extra) {
   using namespace kinetic_theory;
   if (function == "granular_pressure") {
     if (author == "lun") return LunPressure{}(phi, theta, g0, m);

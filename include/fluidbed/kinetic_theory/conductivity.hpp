@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "granular_state.hpp"
 #include "viscosity.hpp"
 
@@ -20,7 +21,7 @@ namespace fluidbed::kinetic_theory {
 // (second term), seed 002 eq. 80: 2 φ² ρ_s d g0 (1 + e) √(Θ/π) (for Syamlal's, the last
 // term of seed 001 eq. 32 is this term).
 template <class Law>
-using WithGidaspowCollisionalConductivity = KineticPlusCollisional<Law, 2.0>;
+using WithGidaspowCollisionalConductivity = KineticPlusCollisional<Law, 2, 1>;
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, ch. 9; seed 001 eq. 31, seed 002
 // eqs 80 and 83:
@@ -32,10 +33,10 @@ struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConduc
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
-    const T one_plus_e = 1.0 + m.restitution;
-    const S bracket = 1.0 + (1.2 * one_plus_e) * phi * g0;
-    return (150.0 / 384.0 * detail::sqrt_pi * m.density * m.diameter / one_plus_e) * sqrt(theta) * bracket * bracket /
-           g0;
+    const T one_plus_e = 1 + m.restitution;
+    const S bracket = 1 + (T(1.2L) * one_plus_e) * phi * g0;
+    return (T(150) / 384 * numbers::sqrt_pi<T>() * m.density * m.diameter / one_plus_e) * sqrt(theta) * bracket *
+           bracket / g0;
   }
 };
 
@@ -49,10 +50,9 @@ struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConducti
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
-    const T eta = 0.5 * (1.0 + m.restitution);
-    const S bracket = 1.0 + (2.4 * eta * eta * (4.0 * eta - 3.0)) * phi * g0;
-    return (15.0 * detail::sqrt_pi * m.density * m.diameter / (4.0 * (41.0 - 33.0 * eta))) * phi * sqrt(theta) *
-           bracket;
+    const T eta = T(0.5) * (1 + m.restitution);
+    const S bracket = 1 + (T(2.4L) * eta * eta * (4 * eta - 3)) * phi * g0;
+    return (15 * numbers::sqrt_pi<T>() * m.density * m.diameter / (4 * (41 - 33 * eta))) * phi * sqrt(theta) * bracket;
   }
 };
 
@@ -73,12 +73,13 @@ struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSi
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     FLUIDBED_EXPECTS(length_scale > 0);
-    const T e = m.restitution, d_factor = 49.0 / 16.0 - 33.0 / 16.0 * e;
+    const T e = m.restitution, d_factor = T(49) / 16 - T(33) / 16 * e;
+    const T sqrt_pi = numbers::sqrt_pi<T>();
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
-    const S bracket =
-        (9.0 / 32.0 * detail::sqrt_pi * (1.0 + e) * (1.0 + e) * (2.0 * e - 1.0) / d_factor) * g0 * phi * phi +
-        (15.0 / 16.0 * detail::sqrt_pi / d_factor) * phi * (0.5 * e * e + 0.25 * e - 0.75 + lambda) / lambda +
-        (25.0 / 64.0 * detail::sqrt_pi / ((1.0 + e) * d_factor)) / (lambda * g0);
+    const S bracket = (T(9) / 32 * sqrt_pi * (1 + e) * (1 + e) * (2 * e - 1) / d_factor) * g0 * phi * phi +
+                      (T(15) / 16 * sqrt_pi / d_factor) * phi * (T(0.5) * e * e + T(0.25) * e - T(0.75) + lambda) /
+                          lambda +
+                      (T(25) / 64 * sqrt_pi / ((1 + e) * d_factor)) / (lambda * g0);
     return (m.density * m.diameter) * sqrt(theta) * bracket;
   }
 };

@@ -117,4 +117,18 @@ struct ConstitutiveSet {
   }
 };
 
+// Deduction from the laws, e.g. ConstitutiveSet{Ogawa{0.63}, LunPressure{}, SyamlalViscosity{},
+// SyamlalConductivity{}}: explicit, since clang before 17 deduces no template arguments of an
+// aggregate by itself (C++20's P1816).
+template <class RadialDistribution, class Pressure, class ShearViscosity, class Conductivity>
+ConstitutiveSet(RadialDistribution, Pressure, ShearViscosity, Conductivity)
+    -> ConstitutiveSet<RadialDistribution, Pressure, ShearViscosity, Conductivity>;
+template <class RadialDistribution, class Pressure, class ShearViscosity, class Conductivity, class BulkViscosity>
+ConstitutiveSet(RadialDistribution, Pressure, ShearViscosity, Conductivity, BulkViscosity)
+    -> ConstitutiveSet<RadialDistribution, Pressure, ShearViscosity, Conductivity, BulkViscosity>;
+template <class RadialDistribution, class Pressure, class ShearViscosity, class Conductivity, class BulkViscosity,
+          class Dissipation>
+ConstitutiveSet(RadialDistribution, Pressure, ShearViscosity, Conductivity, BulkViscosity, Dissipation)
+    -> ConstitutiveSet<RadialDistribution, Pressure, ShearViscosity, Conductivity, BulkViscosity, Dissipation>;
+
 }  // namespace fluidbed::kinetic_theory

@@ -31,6 +31,7 @@
 #include <string_view>
 
 #include "../core/config.hpp"
+#include "../core/constants.hpp"
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
 
@@ -62,8 +63,8 @@ FLUIDBED_HOST_DEVICE constexpr StrainRate<S> strain_rate_of(const std::array<std
   S contraction(0);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      S d = 0.5 * (gradient[i][j] + gradient[j][i]);
-      if (i == j) d = d - trace / 3.0;
+      S d = value_type_of<S>(0.5) * (gradient[i][j] + gradient[j][i]);
+      if (i == j) d = d - trace / 3;
       contraction = contraction + d * d;
     }
   return {trace, contraction};
@@ -142,8 +143,6 @@ struct scalar_of<Dual<T, N>> {
 template <class S>
 using scalar_of_t = typename scalar_of<S>::type;
 
-inline constexpr double sqrt_pi = 1.7724538509055160273;
-
 // f(x) for x ≤ x_c and its tangent at x_c beyond: f(x_c) + f'(x_c)(x − x_c). The closures
 // use it for factors that are singular at a packing limit (documented per closure): the
 // result is finite for every x, continuous with a continuous slope, and the derivative
@@ -204,7 +203,7 @@ std::string checked_function_name(const Law& law) {
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S collisional_transfer(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) {
   using std::sqrt;
-  return (m.density * m.diameter * (1.0 + m.restitution) / sqrt_pi) * (phi * phi * g0 * sqrt(theta));
+  return (m.density * m.diameter * (1 + m.restitution) / numbers::sqrt_pi<T>()) * (phi * phi * g0 * sqrt(theta));
 }
 
 }  // namespace detail
@@ -212,12 +211,16 @@ FLUIDBED_HOST_DEVICE S collisional_transfer(const S& phi, const S& theta, const 
 // The shape of a transport coefficient with a kinetic (streaming) and a collisional part,
 // the latter collisional_factor × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
 // viscosity: 4/5, conductivity: 2). Law provides kinetic(φ, Θ, g0, m); the call is the sum.
-template <class Law, double collisional_factor>
+// The factor is the ratio numerator/denominator: a floating-point template argument would need
+// clang 18 or later.
+template <class Law, int numerator, int denominator>
 struct KineticPlusCollisional {
+  static constexpr double collisional_factor = double(numerator) / denominator;
+
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
-    return collisional_factor * detail::collisional_transfer(phi, theta, g0, m);
+    return value_type_of<S>(numerator) / denominator * detail::collisional_transfer(phi, theta, g0, m);
   }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {

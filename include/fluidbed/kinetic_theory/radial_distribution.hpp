@@ -47,8 +47,8 @@ struct CarnahanStarling {
   template <class S>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
-    const S gap = 1.0 - phi;
-    return (1.0 - 0.5 * phi) / (gap * gap * gap);
+    const S gap = 1 - phi;
+    return (1 - value_type_of<S>(0.5) * phi) / (gap * gap * gap);
   }
 };
 
@@ -63,8 +63,8 @@ struct PercusYevick {
   template <class S>
   FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
-    const S gap = 1.0 - phi;
-    return (1.0 + 0.5 * phi) / (gap * gap);
+    const S gap = 1 - phi;
+    return (1 + value_type_of<S>(0.5) * phi) / (gap * gap);
   }
 };
 
@@ -81,18 +81,23 @@ struct LunSavage {
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
-    const double exponent = -2.5 * max_packing, m = max_packing;
-    return detail::continued_linearly_above(phi, m - packing_margin,
-                                            [&](const auto& x) { return pow(1.0 - x / m, exponent); });
+    using T = value_type_of<S>;
+    const T m = T(max_packing), exponent = T(-2.5) * m;
+    return detail::continued_linearly_above(phi, m - T(packing_margin),
+                                            [&](const auto& x) { return pow(1 - x / m, exponent); });
   }
 };
 
 namespace detail {
 
 // g0 = prefactor/(1 − (φ/φ_max)^(1/3)), the cube-root form shared by Ogawa,
-// Sinclair–Jackson and Gidaspow, continued linearly above φ_max − packing_margin.
-template <double prefactor>
+// Sinclair–Jackson and Gidaspow, continued linearly above φ_max − packing_margin. The
+// prefactor is the ratio numerator/denominator: a floating-point template argument would
+// need clang 18 or later.
+template <int numerator, int denominator>
 struct CubeRootContact {
+  static constexpr double prefactor = double(numerator) / denominator;
+
   double max_packing;
   double packing_margin;
 
@@ -101,9 +106,10 @@ struct CubeRootContact {
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::cbrt;
     FLUIDBED_EXPECTS(valid_solid_fraction(phi) && valid_packing(max_packing, packing_margin));
-    const double m = max_packing;
-    return prefactor *
-           continued_linearly_above(phi, m - packing_margin, [&](const auto& x) { return 1.0 / (1.0 - cbrt(x / m)); });
+    using T = value_type_of<S>;
+    const T m = T(max_packing);
+    return T(numerator) / denominator *
+           continued_linearly_above(phi, m - T(packing_margin), [&](const auto& x) { return 1 / (1 - cbrt(x / m)); });
   }
 };
 
@@ -112,7 +118,7 @@ struct CubeRootContact {
 // Ogawa, Umemura & Oshima (1980), Z. angew. Math. Phys. 31, 483–493; seed 001 eq. 24
 // (FLUENT calls it "Lun et al."): g0 = 1/(1 − (φ/φ_max)^(1/3)), continued linearly above
 // φ_max − packing_margin. Seed 001 uses φ_max = 0.63.
-struct Ogawa : detail::CubeRootContact<1.0> {
+struct Ogawa : detail::CubeRootContact<1, 1> {
   constexpr explicit Ogawa(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "Ogawa"; }
@@ -125,7 +131,7 @@ struct Ogawa : detail::CubeRootContact<1.0> {
 // expression as Ogawa, 1/(1 − (φ/φ_max)^(1/3)). OpenFOAM's SinclairJackson also freezes
 // g0 above alphaMinFriction while its g0prime does not; here there is no freeze, only the
 // linear continuation above φ_max − packing_margin, with a consistent derivative.
-struct SinclairJackson : detail::CubeRootContact<1.0> {
+struct SinclairJackson : detail::CubeRootContact<1, 1> {
   constexpr explicit SinclairJackson(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "SinclairJackson"; }
@@ -137,7 +143,7 @@ struct SinclairJackson : detail::CubeRootContact<1.0> {
 // Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press (SedFoam Gidaspow):
 // g0 = (3/5)/(1 − (φ/φ_max)^(1/3)). As published it tends to 3/5, not 1, as φ → 0; it is
 // offered for reproducing codes that use it, not as a dilute-consistent form.
-struct GidaspowRadialDistribution : detail::CubeRootContact<0.6> {
+struct GidaspowRadialDistribution : detail::CubeRootContact<3, 5> {
   constexpr explicit GidaspowRadialDistribution(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
   constexpr std::string_view name() const { return "Gidaspow"; }
@@ -150,7 +156,7 @@ struct GidaspowRadialDistribution : detail::CubeRootContact<0.6> {
 // MFiX's source writes 4.5094, a transposition of the published 4.5904. The
 // denominator factor is continued linearly above 0.64356 − packing_margin.
 struct MaAhmadi {
-  static constexpr double max_packing = 0.64356;
+  static constexpr long double max_packing = 0.64356L;
   double packing_margin = default_packing_margin;
 
   constexpr std::string_view name() const { return "MaAhmadi"; }
@@ -160,10 +166,11 @@ struct MaAhmadi {
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     using std::pow;
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
-    const S polynomial = 1.0 + phi * (2.5 + phi * (4.5904 + phi * 4.515439));
-    const S packing = detail::continued_linearly_above(phi, max_packing - packing_margin, [](const auto& x) {
-      const auto r = x / max_packing;
-      return pow(1.0 - r * r * r, -0.67802);
+    using T = value_type_of<S>;
+    const S polynomial = 1 + phi * (T(2.5) + phi * (T(4.5904L) + phi * T(4.515439L)));
+    const S packing = detail::continued_linearly_above(phi, T(max_packing) - T(packing_margin), [](const auto& x) {
+      const auto r = x / T(max_packing);
+      return pow(1 - r * r * r, T(-0.67802L));
     });
     return polynomial * packing;
   }
@@ -175,8 +182,10 @@ namespace detail {
 // modified Mansoori form (Lathouwers–Bellan).
 template <class S>
 FLUIDBED_HOST_DEVICE S inverse_gap_power(const S& x, double max_packing, double margin, int power) {
-  return continued_linearly_above(x, max_packing - margin, [&](const auto& y) {
-    const auto inverse_gap = 1.0 / (1.0 - y / max_packing);
+  using T = value_type_of<S>;
+  const T m = T(max_packing);
+  return continued_linearly_above(x, m - T(margin), [&](const auto& y) {
+    const auto inverse_gap = 1 / (1 - y / m);
     auto result = inverse_gap;
     for (int i = 1; i < power; ++i) result = result * inverse_gap;
     return result;
@@ -201,7 +210,7 @@ FLUIDBED_HOST_DEVICE MansooriFactors<S> modified_mansoori_factors(const S& total
 // r = φ/2).
 template <class S>
 FLUIDBED_HOST_DEVICE constexpr S mansoori_sum(const MansooriFactors<S>& f, const S& reduced_xi) {
-  return f.first + 3.0 * reduced_xi * f.second + 2.0 * reduced_xi * reduced_xi * f.third;
+  return f.first + 3 * reduced_xi * f.second + 2 * reduced_xi * reduced_xi * f.third;
 }
 
 }  // namespace detail
@@ -227,7 +236,7 @@ struct LathouwersBellan {
   FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
     FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     const auto f = detail::modified_mansoori_factors(phi, max_packing, packing_margin);
-    return detail::mansoori_sum(f, S(0.5 * phi));
+    return detail::mansoori_sum(f, S(value_type_of<S>(0.5) * phi));
   }
 };
 

@@ -11,9 +11,9 @@
 #pragma once
 
 #include <cmath>
-#include <numbers>
 #include <string_view>
 
+#include "../core/constants.hpp"
 #include "granular_state.hpp"
 
 namespace fluidbed::kinetic_theory {
@@ -24,14 +24,14 @@ namespace detail {
 template <class S, class T>
 FLUIDBED_HOST_DEVICE S dilute_viscosity(const S& theta, const GranularMaterial<T>& m) {
   using std::sqrt;
-  return (5.0 / 96.0 * sqrt_pi * m.density * m.diameter) * sqrt(theta);
+  return (T(5) / 96 * numbers::sqrt_pi<T>() * m.density * m.diameter) * sqrt(theta);
 }
 
 // Hrenya & Sinclair's mean-free-path factor λ = 1 + d/(6√2 (φ + 10⁻⁵) L) (OpenFOAM's form;
 // the 10⁻⁵ keeps it finite at φ = 0), shared by their viscosity and conductivity.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const T& diameter, double length_scale) {
-  return 1.0 + diameter / (6.0 * std::numbers::sqrt2 * length_scale) / (phi + 1e-5);
+  return 1 + diameter / (6 * numbers::sqrt2<T>() * T(length_scale)) / (phi + T(1e-5L));
 }
 
 }  // namespace detail
@@ -39,7 +39,7 @@ FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const
 // The collisional shear viscosity of every law below is Gidaspow's (1994), seed 001 eq. 26
 // (× φ), seed 002 eq. 79 (second term): (4/5) φ² ρ_s d g0 (1 + e) √(Θ/π).
 template <class Law>
-using WithGidaspowCollisionalViscosity = KineticPlusCollisional<Law, 0.8>;
+using WithGidaspowCollisionalViscosity = KineticPlusCollisional<Law, 4, 5>;
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press, eqs 9.183 ff.; seed 002
 // eq. 82 (the "exact" y-form it equals):
@@ -52,9 +52,9 @@ struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
   constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    const T one_plus_e = 1.0 + m.restitution;
-    const S bracket = 1.0 + (0.8 * one_plus_e) * g0 * phi;
-    return 2.0 * detail::dilute_viscosity(theta, m) * bracket * bracket / (one_plus_e * g0);
+    const T one_plus_e = 1 + m.restitution;
+    const S bracket = 1 + (T(0.8L) * one_plus_e) * g0 * phi;
+    return 2 * detail::dilute_viscosity(theta, m) * bracket * bracket / (one_plus_e * g0);
   }
 };
 
@@ -69,8 +69,8 @@ struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     const T e = m.restitution;
-    const S bracket = 1.0 + (0.4 * (1.0 + e) * (3.0 * e - 1.0)) * phi * g0;
-    return (detail::sqrt_pi * m.density * m.diameter / (6.0 * (3.0 - e))) * phi * sqrt(theta) * bracket;
+    const S bracket = 1 + (T(0.4L) * (1 + e) * (3 * e - 1)) * phi * g0;
+    return (numbers::sqrt_pi<T>() * m.density * m.diameter / (6 * (3 - e))) * phi * sqrt(theta) * bracket;
   }
 };
 
@@ -92,12 +92,13 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     FLUIDBED_EXPECTS(length_scale > 0);
-    const T e = m.restitution, three_minus_e = 3.0 - e;
+    const T e = m.restitution, three_minus_e = 3 - e;
+    const T sqrt_pi = numbers::sqrt_pi<T>();
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
     const S bracket =
-        (detail::sqrt_pi / 15.0 * (1.0 + e) * (3.0 * e - 1.0) / three_minus_e) * g0 * phi * phi +
-        (detail::sqrt_pi / 6.0) * phi * (0.5 * lambda + 0.25 * (3.0 * e - 1.0)) / (0.5 * three_minus_e * lambda) +
-        (10.0 / 96.0 * detail::sqrt_pi / ((1.0 + e) * 0.5 * three_minus_e)) / (g0 * lambda);
+        (sqrt_pi / 15 * (1 + e) * (3 * e - 1) / three_minus_e) * g0 * phi * phi +
+        (sqrt_pi / 6) * phi * (T(0.5) * lambda + T(0.25) * (3 * e - 1)) / (T(0.5) * three_minus_e * lambda) +
+        (T(10) / 96 * sqrt_pi / ((1 + e) * T(0.5) * three_minus_e)) / (g0 * lambda);
     return (m.density * m.diameter) * sqrt(theta) * bracket;
   }
 };
@@ -111,7 +112,7 @@ struct LunBulkViscosity {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
-    return (4.0 / 3.0) * detail::collisional_transfer(phi, theta, g0, m);
+    return value_type_of<S>(4) / 3 * detail::collisional_transfer(phi, theta, g0, m);
   }
 };
 
