@@ -322,7 +322,10 @@ TEST_CASE_TEMPLATE("types: correction.hpp — McGraw, the log-normal fill, the m
 }
 
 TEST_CASE_TEMPLATE("types: batched.hpp — invert_batched = invert per cell, N = 1 … 4", T, float, double, long double) {
-  const auto run = [](auto nodes_tag, const auto& set) {
+  // Per cell and in lanes the recurrence rounds differently where the compiler contracts a*b + c
+  // into an FMA in one path only (-march=native); the rules then agree to the conditioning of the
+  // set, the factors of the inversion tests above.
+  const auto run = [](auto nodes_tag, const auto& set, double factor) {
     constexpr int N = decltype(nodes_tag)::value;
     constexpr std::size_t cells = 37;  // full and partial lanes in every type
     std::vector<std::vector<T>> fields(2 * N, std::vector<T>(cells));
@@ -349,16 +352,17 @@ TEST_CASE_TEMPLATE("types: batched.hpp — invert_batched = invert per cell, N =
       INFO("N = " << N << ", cell " << c);
       CHECK(status[c] == single.status);
       CHECK(sizes[c] == N);
-      for (int i = 0; i < N; ++i) {  // the three-node lanes use another solver: to rounding
-        CHECK(close(x[std::size_t(i)][c], single.quadrature.nodes[std::size_t(i)], 64));
-        CHECK(close(w[std::size_t(i)][c], single.quadrature.weights[std::size_t(i)], 64, T(1)));
+      for (int i = 0; i < N; ++i) {
+        CHECK(close(x[std::size_t(i)][c], single.quadrature.nodes[std::size_t(i)], factor));
+        CHECK(close(w[std::size_t(i)][c], single.quadrature.weights[std::size_t(i)], factor, T(1)));
       }
     }
   };
-  run(std::integral_constant<int, 1>{}, std::array<T, 2>{T(1), T(3)});
-  run(std::integral_constant<int, 2>{}, std::array<T, 4>{T(1), ratio<T>(5, 2), ratio<T>(17, 2), ratio<T>(65, 2)});  // atoms 1, 4
-  run(std::integral_constant<int, 3>{}, three_atoms<T>());
-  run(std::integral_constant<int, 4>{}, four_atoms<T>());
+  run(std::integral_constant<int, 1>{}, std::array<T, 2>{T(1), T(3)}, 4);
+  run(std::integral_constant<int, 2>{}, std::array<T, 4>{T(1), ratio<T>(5, 2), ratio<T>(17, 2), ratio<T>(65, 2)},
+      inversion_factor);  // atoms 1, 4
+  run(std::integral_constant<int, 3>{}, three_atoms<T>(), inversion_factor);
+  run(std::integral_constant<int, 4>{}, four_atoms<T>(), 4096);
 }
 
 TEST_CASE_TEMPLATE("types: moment_set.hpp — quadrature moments, mean diameters, NDF, log-normal sets", T, float, double,
