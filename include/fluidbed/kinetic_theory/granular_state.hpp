@@ -209,14 +209,11 @@ FLUIDBED_HOST_DEVICE S collisional_transfer(const S& phi, const S& theta, const 
 }  // namespace detail
 
 // The shape of a transport coefficient with a kinetic (streaming) and a collisional part,
-// the latter collisional_factor × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
+// the latter (numerator/denominator) × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
 // viscosity: 4/5, conductivity: 2). Law provides kinetic(φ, Θ, g0, m); the call is the sum.
-// The factor is the ratio numerator/denominator: a floating-point template argument would need
-// clang 18 or later.
+// The factor is a ratio of integers: a floating-point template argument would need clang 18 or later.
 template <class Law, int numerator, int denominator>
 struct KineticPlusCollisional {
-  static constexpr double collisional_factor = double(numerator) / denominator;
-
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));

@@ -96,8 +96,6 @@ namespace detail {
 // need clang 18 or later.
 template <int numerator, int denominator>
 struct CubeRootContact {
-  static constexpr double prefactor = double(numerator) / denominator;
-
   double max_packing;
   double packing_margin;
 
