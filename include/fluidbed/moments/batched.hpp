@@ -153,19 +153,13 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<
     constexpr int shift = std::numeric_limits<T>::digits - 1;
     constexpr int bias = std::numeric_limits<T>::max_exponent - 1;
     constexpr int none = -4 * bias;  // no scale from this moment (0 or subnormal)
-    // The biased exponent of scaling_of's power of two nearest |x|; 0 for a zero or subnormal x,
-    // which has no exponent field to read.
-    const auto exponent = [](T x) {
-      const int field = int((std::bit_cast<bits>(x) >> shift) & bits(2 * bias + 1));
-      using std::abs;
-      return field > 0 ? nearest_power_of_two_exponent(abs(x)) + bias : 0;
-    };
     // 2^e, or 0 where 2^e is not a normal number (the guards reject the cell then).
     const auto power = [](int e) {
       return e >= 1 - bias && e <= bias ? std::bit_cast<T>(bits(e + bias) << shift) : T(0);
     };
     for (int i = 0; i < L; ++i) {
-      const int e0 = exponent(m0[i]), e1 = exponent(m1[i]), e2 = second ? exponent((*second)[i]) : 0;
+      const int e0 = nearest_biased_exponent(m0[i]), e1 = nearest_biased_exponent(m1[i]);
+      const int e2 = second ? nearest_biased_exponent((*second)[i]) : 0;
       const bool positive_second = second && (*second)[i] > T(0);
       const int from_mean = e1 > 0 ? e1 - e0 : none;
       const int from_second = e2 > 0 && positive_second ? (e2 - e0 + 1) >> 1 : none;

@@ -79,20 +79,28 @@ FLUIDBED_HOST_DEVICE T power_of_two(int e) {
   }
 }
 
+// For a binary layout: the biased exponent of the power of two nearest |x|, read from the bits of
+// a normal x = ±2^E · 1.f: the exponent field, plus one when 1.f >= √2. 0 for a zero or subnormal
+// x (no exponent field to read), beyond the largest field for ±∞ and NaN. The batched lanes
+// (batched.hpp) read their scales with it, branch-free.
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr int nearest_biased_exponent(const T& x) {
+  using bits = layout_bits<T>;
+  constexpr int shift = std::numeric_limits<T>::digits - 1;
+  constexpr bits field_mask = bits(2 * (std::numeric_limits<T>::max_exponent - 1) + 1);
+  constexpr bits fraction_mask = (bits(1) << shift) - 1;
+  constexpr bits root_two = std::bit_cast<bits>(T(1.41421356237309504880)) & fraction_mask;
+  const bits b = std::bit_cast<bits>(x);
+  const int field = int((b >> shift) & field_mask);
+  return field == 0 ? 0 : field + int((b & fraction_mask) >= root_two);
+}
+
 // The nearest integer to log2(x) for x > 0 finite.
 template <class T>
 FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
   if constexpr (has_binary_layout<T>) {
     using std::isnormal;
-    if (isnormal(x)) {  // x = 2^E · 1.f: E, or E + 1 when 1.f >= √2
-      using bits = layout_bits<T>;
-      constexpr int shift = std::numeric_limits<T>::digits - 1;
-      constexpr bits fraction_mask = (bits(1) << shift) - 1;
-      constexpr bits root_two = std::bit_cast<bits>(T(1.41421356237309504880)) & fraction_mask;
-      const bits b = std::bit_cast<bits>(x);
-      const int e = int(b >> shift) - (std::numeric_limits<T>::max_exponent - 1);
-      return (b & fraction_mask) < root_two ? e : e + 1;
-    }
+    if (isnormal(x)) return nearest_biased_exponent(x) - (std::numeric_limits<T>::max_exponent - 1);
   }
   using std::frexp;
   int e = 0;
