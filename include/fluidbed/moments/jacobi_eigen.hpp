@@ -321,7 +321,8 @@ template <class T, int N>
 FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_three_nodes(const Recurrence<T, N>& r) {
   static_assert(N >= 3, "fluidbed::moments::gauss_three_nodes: a three-node rule needs a Recurrence<T, N> with N >= 3");
   Quadrature<T, N> q;
-  if (r.size == 3) detail::gauss_three_nodes_within_limit(r, q);
+  if constexpr (N >= 3)  // (only the message above for a smaller N)
+    if (r.size == 3) detail::gauss_three_nodes_within_limit(r, q);
   return q;
 }
 
