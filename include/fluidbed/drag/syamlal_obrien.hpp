@@ -8,7 +8,7 @@
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
 #include "../properties.hpp"
-#include "../settling/terminal_velocity.hpp"
+#include "../settling/terminal_velocity_closed_forms.hpp"
 #include "drag_law.hpp"
 #include "single_particle.hpp"
 

@@ -43,7 +43,7 @@
 #include "../drag/mazzei_lettieri.hpp"
 #include "../properties.hpp"
 #include "../settling/richardson_zaki.hpp"
-#include "../settling/terminal_velocity.hpp"
+#include "../settling/terminal_velocity_closed_forms.hpp"
 
 namespace fluidbed::elastic {
 
