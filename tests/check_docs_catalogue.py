@@ -77,8 +77,12 @@ def strip_code(text):
     for line in lines:  # drop #include, #pragma, #define (with continuations)
         directive = continued or line.lstrip().startswith("#")
         continued = directive and line.rstrip().endswith("\\")
-        code.append("" if directive else line)
+        # and a line that is only a macro invocation (FLUIDBED_EIGEN_CODE_BEGIN): no declaration
+        code.append("" if directive or ALONE_MACRO.match(line) else line)
     return "\n".join(code), literals
+
+
+ALONE_MACRO = re.compile(r"^\s*[A-Z][A-Z0-9_]*\s*$")
 
 
 def drop_template_prefix(chunk):
