@@ -41,17 +41,15 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdint>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
 
-#include <boost/math/tools/roots.hpp>
-
 #include "../core/config.hpp"
 #include "../core/dual.hpp"
+#include "../core/root_finding.hpp"
 #include "../core/errors.hpp"
 #include "../properties.hpp"
 #include "../settling/richardson_zaki.hpp"
@@ -300,19 +298,6 @@ T largest_searched_voidage() {
   return T(1) - T(4) * std::numeric_limits<T>::epsilon();
 }
 
-// A bound on the iterations of every TOMS 748 solve of the search: each converges to
-// eps_tolerance<T> in about ten.
-inline constexpr std::uintmax_t root_iteration_limit = 200;
-
-// The root of f in [a, b], f(a) and f(b) of opposite signs, by TOMS 748 to the precision of T.
-template <class T, class F>
-T bracketed_root(const F& f, const T& a, const T& b, const T& f_a, const T& f_b) {
-  std::uintmax_t iterations = root_iteration_limit;
-  const auto bracket =
-      boost::math::tools::toms748_solve(f, a, b, f_a, f_b, boost::math::tools::eps_tolerance<T>(), iterations);
-  return (bracket.first + bracket.second) / T(2);
-}
-
 // dS/dε, exact (one dual-number evaluation of S).
 template <class T>
 T stability_slope(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
@@ -328,7 +313,7 @@ T stability_slope(ElasticModel model, const HomogeneousSuspension<T>& s, const T
 // precision of T; a value-only search (Brent) could not place it better than √ε_T relative,
 // since S is flat to second order there. Every root of S bracketed by the samples (or by the
 // maximum, so that a positive band narrower than the sampling is still found) is refined by
-// TOMS 748 to the precision of T. Every iteration is bounded (detail::root_iteration_limit).
+// TOMS 748 to the precision of T. Every iteration is bounded (fluidbed::detail::root_iteration_limit).
 // Works in float, double and long double, up to detail::largest_searched_voidage<T>().
 // Throws std::domain_error unless 0 < lower < upper <= 1 and the suspension is valid
 // (detail::validate_suspension), and if S is not finite at a sample (a suspension whose
@@ -366,12 +351,12 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
     const T left = voidage[peak - 1], right = voidage[peak + 1];
     const T slope_left = slope(left), slope_right = slope(right);
     if (slope_left > T(0) && slope_right < T(0)) {
-      out.maximum_voidage = detail::bracketed_root(slope, left, right, slope_left, slope_right);
+      out.maximum_voidage = fluidbed::detail::bracketed_root(slope, left, right, slope_left, slope_right);
       out.maximum_stability = stability(out.maximum_voidage);
     }
   }
   const auto root = [&](const T& a, const T& b) {
-    return detail::bracketed_root(stability, a, b, stability(a), stability(b));
+    return fluidbed::detail::bracketed_root(stability, a, b, stability(a), stability(b));
   };
   // Brackets: between samples of opposite sign, or, when no sample is positive (a band
   // narrower than the sampling), between the maximum and its neighbouring samples.

@@ -11,13 +11,12 @@
 // same for every voidage and every law, and Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f².
 #pragma once
 
-#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <concepts>
-#include <cstdint>
 #include <optional>
 #include <string_view>
 
+#include "../core/root_finding.hpp"
 #include "../drag/any_drag_law.hpp"
 #include "../drag/drag_law.hpp"
 #include "../drag/single_particle.hpp"
@@ -152,10 +151,7 @@ requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law,
     }
   }
   if (at_upper == T(0)) return upper;
-  std::uintmax_t iterations = 200;
-  const auto root = boost::math::tools::toms748_solve(residual, lower, upper, at_lower, at_upper,
-                                                      boost::math::tools::eps_tolerance<T>(), iterations);
-  return (root.first + root.second) / 2;
+  return fluidbed::detail::bracketed_root(residual, lower, upper, at_lower, at_upper);
 }
 
 // As equilibrium_voidage, validating its arguments; throws std::domain_error when there

@@ -4,9 +4,7 @@
 // with Boost.Math.
 #pragma once
 
-#include <boost/math/tools/roots.hpp>
-#include <cstdint>
-
+#include "../core/root_finding.hpp"
 #include "terminal_velocity_closed_forms.hpp"
 
 namespace fluidbed::settling {
@@ -28,10 +26,7 @@ T terminal_reynolds_schiller_naumann(const T& archimedes) {
     return T(0.75) * drag::SchillerNaumannCoefficient::cd_times_re(re) * re / archimedes - 1;
   };
   const T hi = archimedes / 18;
-  std::uintmax_t iterations = 200;
-  const auto root = boost::math::tools::toms748_solve(balance, T(0), hi, T(-1), balance(hi),
-                                                      boost::math::tools::eps_tolerance<T>(), iterations);
-  return (root.first + root.second) / 2;
+  return fluidbed::detail::bracketed_root(balance, T(0), hi, T(-1), balance(hi));
 }
 
 // Schiller–Naumann's u_t (see terminal_reynolds_schiller_naumann for the jump at Re = 1000).
