@@ -194,7 +194,7 @@ TEST_CASE("names: unique, found by run-time lookup, unknown names rejected with 
     CHECK(name_of(make_drag_law(name)) == name);
     CHECK(!std::visit([](const auto& l) { return std::string(l.reference()); }, law).empty());
   }
-  CHECK_THROWS_WITH_AS(make_drag_law("WenYu"), doctest::Contains("known laws: Ergun"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(make_drag_law("WenYu"), doctest::Contains("unknown drag law 'WenYu'; known: Ergun"), std::invalid_argument);
   CHECK(!find_drag_law("wenyu").has_value());
 }
 

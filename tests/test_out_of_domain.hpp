@@ -45,7 +45,7 @@ inline const std::vector<Bad> outside_open_unit =
 inline const std::vector<Bad> outside_closed_unit = and_non_finite({{-0.5, "-0.5"}, {1.5, "1.5"}});
 
 // One argument of a checked entry point.
-struct Argument {
+struct ArgumentCase {
   std::string name;                // as the message names it, e.g. "fluid.density"
   double valid;                    // a value inside the domain
   std::vector<Bad> invalid;        // each must be rejected, naming this argument and the value
@@ -58,7 +58,7 @@ using ValuesOf = std::vector<T>;
 using Values = ValuesOf<double>;
 
 // `head` followed by `tail`: the arguments of an entry point assembled from shared groups.
-inline std::vector<Argument> concatenated(std::vector<Argument> head, const std::vector<Argument>& tail) {
+inline std::vector<ArgumentCase> concatenated(std::vector<ArgumentCase> head, const std::vector<ArgumentCase>& tail) {
   head.insert(head.end(), tail.begin(), tail.end());
   return head;
 }
@@ -77,10 +77,10 @@ Particles<T> particles_of(const ValuesOf<T>& values, std::size_t at) {
 // value; with each invalid value in turn it throws std::domain_error whose message contains
 // "'<name>' = <value>". `call` maps the values (in the order of `arguments`, in T) to a number.
 template <class T = double, class Call>
-void check_entry_point(const std::string& label, const std::vector<Argument>& arguments, const Call& call) {
+void check_entry_point(const std::string& label, const std::vector<ArgumentCase>& arguments, const Call& call) {
   INFO("entry point: ", label);
   ValuesOf<T> valid;
-  for (const Argument& a : arguments) valid.push_back(T(a.valid));
+  for (const ArgumentCase& a : arguments) valid.push_back(T(a.valid));
   T result = std::numeric_limits<T>::quiet_NaN();
   CHECK_NOTHROW(result = call(valid));
   CHECK(std::isfinite(result));

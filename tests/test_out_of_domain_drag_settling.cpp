@@ -20,7 +20,7 @@ using namespace fluidbed;
 using namespace fluidbed::test;
 
 // ρ_f, μ_f, ρ_p, d, g of a water–glass system (ρ_p > ρ_f; 1000 is shown exactly).
-const std::vector<Argument> settling_system{
+const std::vector<ArgumentCase> settling_system{
     {"fluid.density", 1000.0, not_positive},
     {"fluid.viscosity", 1e-3, not_positive},
     {"particles.density", 2500.0, and_non_finite({{0.0, "0"}, {-1.0, "-1"}, {1000.0, "1000"}, {500.0, "500"}})},
@@ -29,7 +29,7 @@ const std::vector<Argument> settling_system{
 };
 
 // The arguments of a drag law's state.
-const std::vector<Argument> drag_state{
+const std::vector<ArgumentCase> drag_state{
     {"voidage", 0.5, outside_voidage, {1.0}},  {"slip", 0.1, negative, {0.0}},   {"fluid.density", 1.25, not_positive},
     {"fluid.viscosity", 1.8e-5, not_positive}, {"diameter", 1e-4, not_positive},
 };
@@ -71,7 +71,7 @@ TEST_CASE_TEMPLATE("out of domain: every drag law, value and derivatives, by typ
 }
 
 TEST_CASE_TEMPLATE("out of domain: Beetstra polydisperse species of a two-species mixture", T, FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> arguments{
+  const std::vector<ArgumentCase> arguments{
       {"fluid.density", 1.25, not_positive},
       {"fluid.viscosity", 1.8e-5, not_positive},
       {"slip", 0.1, negative, {0.0}},
@@ -147,7 +147,7 @@ TEST_CASE_TEMPLATE("out of domain: Syamlal-O'Brien calibration from minimum flui
 
 TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
-  const std::vector<Argument> reynolds{{"terminal_reynolds", 10.0, negative, {0.0}}};
+  const std::vector<ArgumentCase> reynolds{{"terminal_reynolds", 10.0, negative, {0.0}}};
   check_entry_point<T>("richardson_zaki_exponent_mazzei", reynolds,
                        [](const ValuesOf<T>& v) { return richardson_zaki_exponent_mazzei_checked(v[0]); });
   check_entry_point<T>("richardson_zaki_exponent_mazzei_derivative", {{"terminal_reynolds", 10.0, negative}},
@@ -184,7 +184,7 @@ TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", 
 
 TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal velocities", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
-  const std::vector<Argument> archimedes{{"archimedes", 1e4, negative, {0.0}}};
+  const std::vector<ArgumentCase> archimedes{{"archimedes", 1e4, negative, {0.0}}};
   check_entry_point<T>("terminal_reynolds_stokes", archimedes,
                        [](const ValuesOf<T>& v) { return terminal_reynolds_stokes_checked(v[0]); });
   check_entry_point<T>("terminal_reynolds_newton", archimedes,
@@ -209,7 +209,7 @@ TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal veloci
 
 TEST_CASE_TEMPLATE("out of domain: minimum fluidization", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
-  const std::vector<Argument> bed{{"voidage", 0.4, outside_open_unit}, {"sphericity", 0.75, outside_voidage, {1.0}}};
+  const std::vector<ArgumentCase> bed{{"voidage", 0.4, outside_open_unit}, {"sphericity", 0.75, outside_voidage, {1.0}}};
   check_entry_point<T>(
       "minimum_fluidization_reynolds_ergun", concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed),
       [](const ValuesOf<T>& v) { return minimum_fluidization_reynolds_ergun_checked(v[0], v[1], v[2]); });
@@ -228,7 +228,7 @@ TEST_CASE_TEMPLATE("out of domain: bed expansion, voidage ratio, equivalent expo
                    FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const drag::MazzeiLettieri law;
-  const std::vector<Argument> expansion = concatenated({{"superficial_velocity", 5e-3, not_positive}}, settling_system);
+  const std::vector<ArgumentCase> expansion = concatenated({{"superficial_velocity", 5e-3, not_positive}}, settling_system);
   check_entry_point<T>("equilibrium_voidage", expansion, [&](const ValuesOf<T>& v) {
     return equilibrium_voidage_checked(law, v[0], fluid_of(v, 1), particles_of(v, 1), v[5]);
   });

@@ -20,7 +20,7 @@ constexpr std::array models{ElasticModel::foscolo_gibilaro, ElasticModel::jean_f
 
 // ρ_f, μ_f, ρ_p, d, g of FCC in air. The particles must be heavier than the fluid: equal
 // (1.25) and lighter (1) densities are out of domain, as zero and negative ones.
-const std::vector<Argument> fluidized_system{
+const std::vector<ArgumentCase> fluidized_system{
     {"fluid.density", 1.25, not_positive},
     {"fluid.viscosity", 1.8e-5, not_positive},
     {"particles.density", 1210.0, and_non_finite({{0.0, "0"}, {-1.0, "-1"}, {1.25, "1.25"}, {1.0, "1"}})},
@@ -29,8 +29,8 @@ const std::vector<Argument> fluidized_system{
 };
 
 // The three components of a vector argument, each of which must be finite.
-std::vector<Argument> vector_argument(const std::string& name, const Vector3<double>& valid) {
-  std::vector<Argument> components;
+std::vector<ArgumentCase> vector_argument(const std::string& name, const Vector3<double>& valid) {
+  std::vector<ArgumentCase> components;
   for (std::size_t i = 0; i < 3; ++i)
     components.push_back({name + "[" + std::to_string(i) + "]", valid[i], non_finite});
   return components;
@@ -48,7 +48,7 @@ T sum_of(const Vector3<T>& v) {
 
 // The suspension of homogeneous_suspension(FCC in air) with each field an argument.
 const HomogeneousSuspension<double> fcc = homogeneous_suspension<double>({1.25, 1.8e-5}, {1210.0, 1e-4});
-const std::vector<Argument> suspension_fields =
+const std::vector<ArgumentCase> suspension_fields =
     concatenated(fluidized_system, {
                                        {"suspension.terminal_velocity", fcc.terminal_velocity, not_positive},
                                        {"suspension.terminal_reynolds", fcc.terminal_reynolds, not_positive},
@@ -87,7 +87,7 @@ TEST_CASE_TEMPLATE("out of domain: elastic moduli at equilibrium, Table 3.1 func
 
 TEST_CASE_TEMPLATE("out of domain: functions of a state (voidage, slip): Re*, H, drag and modulus off equilibrium", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> state{
+  const std::vector<ArgumentCase> state{
       {"voidage", 0.5, outside_voidage, {1.0}}, {"slip", 0.1, negative, {0.0}},
       {"fluid.density", 1.25, not_positive},    {"fluid.viscosity", 1.8e-5, not_positive},
       {"diameter", 1e-4, not_positive},
@@ -109,7 +109,7 @@ TEST_CASE_TEMPLATE("out of domain: functions of a state (voidage, slip): Re*, H,
 }
 
 TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> force =
+  const std::vector<ArgumentCase> force =
       concatenated(concatenated(vector_argument("drag_force", {0.0, 1.0, 2.0}),
                                 vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    {{"sensitivity", -4.8, non_finite}, {"diameter", 1e-4, not_positive}});
@@ -118,7 +118,7 @@ TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED
   });
   CHECK(elastic_force_checked(Vector3<T>{0, 0, 0}, Vector3<T>{0, 0, 4}, T(-4.8L), T(1e-4L)) ==
         Vector3<T>{0, 0, 0});  // no drag, no force
-  const std::vector<Argument> vertical =
+  const std::vector<ArgumentCase> vertical =
       concatenated(concatenated({{"modulus", 0.5, non_finite}}, vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    vector_argument("upward", {0.0, 0.0, 1.0}));
   check_entry_point<T>("elastic_force_vertical", vertical, [](const ValuesOf<T>& v) {
@@ -129,9 +129,9 @@ TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED
 }
 
 TEST_CASE_TEMPLATE("out of domain: buoyancy and the other interaction forces", T, FLUIDBED_SCALAR_TYPES) {
-  const Argument solid_fraction{"solid_fraction", 0.5, outside_solid_fraction, {0.0}};
-  const Argument fluid_density{"fluid_density", 1.25, not_positive};
-  const Argument coefficient{"coefficient", 0.5, negative, {0.0}};
+  const ArgumentCase solid_fraction{"solid_fraction", 0.5, outside_solid_fraction, {0.0}};
+  const ArgumentCase fluid_density{"fluid_density", 1.25, not_positive};
+  const ArgumentCase coefficient{"coefficient", 0.5, negative, {0.0}};
   const auto gravity = vector_argument("gravity", {0.0, 0.0, -9.81});
   check_entry_point<T>(
       "classical_buoyancy", concatenated({solid_fraction, fluid_density}, gravity),
@@ -179,7 +179,7 @@ TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function an
   check_entry_point<T>("homogeneous_suspension", fluidized_system, [](const ValuesOf<T>& v) {
     return homogeneous_suspension_checked(fluid_of(v, 0), particles_of(v, 0), v[4]).terminal_velocity;
   });
-  const std::vector<Argument> state = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage}});
+  const std::vector<ArgumentCase> state = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage}});
   for (const ElasticModel model : models) {
     check_entry_point<T>("stability_function " + std::string(name(model)), state, [model](const ValuesOf<T>& v) {
       return stability_function_checked(model, suspension_of(v), v[8]);
@@ -194,7 +194,7 @@ TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function an
                            return w.kinematic + w.dynamic + w.damping;
                          });
   }
-  const std::vector<Argument> waves{
+  const std::vector<ArgumentCase> waves{
       {"waves.kinematic", 0.02, negative, {0.0}},
       {"waves.dynamic", 0.01, negative, {0.0}},
       {"waves.damping", 20.0, negative, {0.0}},
@@ -214,7 +214,7 @@ TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function an
 
 TEST_CASE_TEMPLATE("out of domain: minimum bubbling point validates the suspension and the interval", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> arguments = concatenated(
+  const std::vector<ArgumentCase> arguments = concatenated(
       suspension_fields, {{"interval.lower", 0.25, outside_open_unit},
                           {"interval.upper", 1.0, and_non_finite({{0.25, "0.25"}, {0.0, "0"}, {1.5, "1.5"}})}});
   check_entry_point<T>("minimum_bubbling_point", arguments, [](const ValuesOf<T>& v) {

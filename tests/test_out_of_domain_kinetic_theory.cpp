@@ -20,24 +20,24 @@ using namespace fluidbed;
 using namespace fluidbed::kinetic_theory;
 using namespace fluidbed::test;
 
-const Argument solid_fraction{"solid_fraction", 0.3, outside_solid_fraction, {0.0}};
-const Argument granular_temperature{"granular_temperature", 0.01, negative, {0.0}};
-const Argument g0{"g0", 2.0, not_positive};
-const std::vector<Argument> material{
+const ArgumentCase solid_fraction{"solid_fraction", 0.3, outside_solid_fraction, {0.0}};
+const ArgumentCase granular_temperature{"granular_temperature", 0.01, negative, {0.0}};
+const ArgumentCase g0{"g0", 2.0, not_positive};
+const std::vector<ArgumentCase> material{
     {"material.diameter", 5e-4, not_positive},
     {"material.density", 2500.0, not_positive},
     {"material.restitution", 0.9, outside_closed_unit, {0.0, 1.0}},
 };
-const std::vector<Argument> strain_rate{
+const std::vector<ArgumentCase> strain_rate{
     {"rate.divergence", 0.5, non_finite, {0.0, -1.0}},
     {"rate.deviatoric_contraction", 2.0, negative, {0.0}},
 };
 // φ_max = 0.625 is also the out-of-domain margin (a margin must lie below φ_max).
-const std::vector<Argument> packing{
+const std::vector<ArgumentCase> packing{
     {"max_packing", 0.625, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {1.5, "1.5"}}), {1.0}},
     {"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {0.625, "0.625"}})},
 };
-const std::vector<Argument> johnson_jackson_parameters{
+const std::vector<ArgumentCase> johnson_jackson_parameters{
     {"min_fraction", 0.5, and_non_finite({{-0.5, "-0.5"}, {0.625, "0.625"}, {1.5, "1.5"}}), {0.0}},
     {"max_packing", 0.625, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {1.5, "1.5"}})},
     {"coefficient", 0.05, negative, {0.0}},
@@ -45,11 +45,11 @@ const std::vector<Argument> johnson_jackson_parameters{
     {"denominator_exponent", 5.0, negative, {0.0}},
     {"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {0.625, "0.625"}})},
 };
-const std::vector<Argument> yield_parameters{
+const std::vector<ArgumentCase> yield_parameters{
     {"friction_angle", 0.5, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {2.0, "2"}})},
     {"strain_rate_floor", 1e-6, not_positive},
 };
-const Argument temperature_floor{"temperature_floor", 1e-6, not_positive};
+const ArgumentCase temperature_floor{"temperature_floor", 1e-6, not_positive};
 
 template <class T>
 GranularMaterial<T> material_of(const ValuesOf<T>& v, std::size_t at) {
@@ -73,7 +73,7 @@ JohnsonJacksonPressure johnson_jackson_of(const ValuesOf<T>& v, std::size_t at) 
 // A closure law(φ, Θ, g0, material) built by make(values), the law's parameters (if any)
 // being the arguments after the material.
 template <class T, class Make>
-void check_closure(const std::string& label, const std::vector<Argument>& parameters, const Make& make) {
+void check_closure(const std::string& label, const std::vector<ArgumentCase>& parameters, const Make& make) {
   check_entry_point<T>(
       label, concatenated(concatenated({solid_fraction, granular_temperature, g0}, material), parameters),
       [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0], v[1], v[2], material_of(v, 3)); });
@@ -81,8 +81,8 @@ void check_closure(const std::string& label, const std::vector<Argument>& parame
 
 // A one-class g0(φ) built by make(values), its parameters after φ.
 template <class T, class Make>
-void check_radial_distribution(const std::string& label, const std::vector<Argument>& parameters, const Make& make) {
-  const Argument phi{"solid_fraction", 0.3, outside_solid_fraction, {0.0, 0.7}};  // 0.7: beyond packing, continued
+void check_radial_distribution(const std::string& label, const std::vector<ArgumentCase>& parameters, const Make& make) {
+  const ArgumentCase phi{"solid_fraction", 0.3, outside_solid_fraction, {0.0, 0.7}};  // 0.7: beyond packing, continued
   check_entry_point<T>(label, concatenated({phi}, parameters),
                        [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0]); });
 }
@@ -115,7 +115,7 @@ TEST_CASE_TEMPLATE("out of domain: pressures, viscosities, conductivities and di
                    [](const ValuesOf<T>& v) { return AhmadiMaPressure{parameter(v, 6)}; });
   check_closure<T>("GidaspowViscosity", {}, [](const auto&) { return GidaspowViscosity{}; });
   check_closure<T>("SyamlalViscosity", {}, [](const auto&) { return SyamlalViscosity{}; });
-  const std::vector<Argument> length{{"length_scale", 0.05, not_positive}};
+  const std::vector<ArgumentCase> length{{"length_scale", 0.05, not_positive}};
   check_closure<T>("HrenyaSinclairViscosity", length,
                    [](const ValuesOf<T>& v) { return HrenyaSinclairViscosity(v[6]); });
   check_closure<T>("LunBulkViscosity", {}, [](const auto&) { return LunBulkViscosity{}; });
@@ -127,7 +127,7 @@ TEST_CASE_TEMPLATE("out of domain: pressures, viscosities, conductivities and di
 }
 
 TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLUIDBED_SCALAR_TYPES) {
-  const Argument dense{"solid_fraction", 0.62, outside_solid_fraction, {0.0, 0.7}};
+  const ArgumentCase dense{"solid_fraction", 0.62, outside_solid_fraction, {0.0, 0.7}};
   check_entry_point<T>("JohnsonJacksonPressure", concatenated({dense}, johnson_jackson_parameters),
                        [](const ValuesOf<T>& v) { return evaluate_checked(johnson_jackson_of(v, 1), v[0]); });
   check_entry_point<T>(
@@ -145,7 +145,7 @@ TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLU
       [](const ValuesOf<T>& v) {
         return evaluate_checked(SchaefferViscosity{parameter(v, 3), parameter(v, 4)}, v[0], rate_of(v, 1));
       });
-  const std::vector<Argument> srivastava_sundaresan = concatenated(
+  const std::vector<ArgumentCase> srivastava_sundaresan = concatenated(
       concatenated(concatenated({dense, granular_temperature, {"diameter", 5e-4, not_positive}}, strain_rate),
                    johnson_jackson_parameters),
       yield_parameters);
@@ -184,7 +184,7 @@ TEST_CASE_TEMPLATE("out of domain: exchange of granular energy with the gas", T,
 
 TEST_CASE_TEMPLATE("out of domain: mixture radial distributions, element by element, and their spans", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> classes{
+  const std::vector<ArgumentCase> classes{
       {"fractions[0]", 0.25, negative, {0.0}},
       {"fractions[1]", 0.125, negative, {0.0}},
       {"diameters[0]", 1e-4, not_positive},
@@ -215,7 +215,7 @@ TEST_CASE_TEMPLATE("out of domain: mixture radial distributions, element by elem
 }
 
 TEST_CASE_TEMPLATE("out of domain: solid-solid drag", T, FLUIDBED_SCALAR_TYPES) {
-  const std::vector<Argument> arguments{
+  const std::vector<ArgumentCase> arguments{
       {"phi_p", 0.25, outside_solid_fraction, {0.0}},
       {"phi_q", 0.125, outside_solid_fraction, {0.0}},
       {"p.density", 2500.0, not_positive},
@@ -235,8 +235,8 @@ TEST_CASE_TEMPLATE("out of domain: solid-solid drag", T, FLUIDBED_SCALAR_TYPES) 
 
 TEST_CASE_TEMPLATE("out of domain: algebraic granular temperature, free and through a ConstitutiveSet", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const Argument beta{"beta", 10.0, negative, {0.0}};
-  const std::vector<Argument> free =
+  const ArgumentCase beta{"beta", 10.0, negative, {0.0}};
+  const std::vector<ArgumentCase> free =
       concatenated(concatenated({solid_fraction, g0}, material),
                    concatenated(strain_rate, {beta, {"length_scale", 0.05, not_positive}}));
   check_entry_point<T>("algebraic_granular_temperature", free, [](const ValuesOf<T>& v) {
@@ -253,7 +253,7 @@ TEST_CASE_TEMPLATE("out of domain: algebraic granular temperature, free and thro
     return ConstitutiveSet{Ogawa(v[at], v[at + 1]), LunPressure{}, HrenyaSinclairViscosity(v[at + 2]),
                            HrenyaSinclairConductivity(v[at + 2])};
   };
-  const std::vector<Argument> set_parameters = concatenated(packing, {{"length_scale", 0.05, not_positive}});
+  const std::vector<ArgumentCase> set_parameters = concatenated(packing, {{"length_scale", 0.05, not_positive}});
   check_entry_point<T>("ConstitutiveSet::checked",
                        concatenated(concatenated({solid_fraction, granular_temperature}, material), set_parameters),
                        [&](const ValuesOf<T>& v) {

@@ -204,7 +204,7 @@ TEST_CASE("out of domain: sieve moments, checked") {
     const std::array<double, 3> fractions{v[4], v[5], v[6]};
     return sieve_moment_checked(SieveAnalysis<double>{edges, fractions}, v[7], 3);
   };
-  const std::vector<Argument> arguments{
+  const std::vector<ArgumentCase> arguments{
       {"edges[0]", 45e-6, negative, {0.0}},
       {"edges[1]", 63e-6, and_non_finite({{0.0, "0"}, {-1.0, "-1"}})},  // not increasing
       {"edges[2]", 90e-6, and_non_finite({{0.0, "0"}, {-1.0, "-1"}})},

@@ -1,54 +1,84 @@
-// fluidbed — argument validation for the checked entry points.
+// fluidbed — the checked entry points' exceptions (host only).
 //
-// The hot path (per-cell calls) states its preconditions and asserts them in debug
-// builds only. The checked entry points call these helpers, which throw
-// std::domain_error with the function, the argument's name and its offending value:
+// The hot path (per-cell calls) states its preconditions and asserts them in debug builds
+// only (domain.hpp). The checked entry points validate the same domains with these helpers,
+// which throw std::domain_error with the function, the argument's name and its offending value:
 //   fluidbed::<function>: argument '<argument>' = <value> is out of domain (<requirement>)
 // Every helper rejects NaN and ±∞. require_finite_result checks a result the same way.
+// Numbers are written with 17 significant digits (std::to_chars), without <sstream>.
 #pragma once
 
-#include <cmath>
+#include <charconv>
+#include <concepts>
 #include <cstddef>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "domain.hpp"
 
 namespace fluidbed {
 
 namespace detail {
 
+// x as text: integers exactly, floating-point numbers with 17 significant digits ("%.17g"),
+// any other scalar (Boost.Multiprecision) through long double.
+template <class T>
+std::string number_text(const T& x) {
+  if constexpr (std::integral<T>) {
+    return std::to_string(x);
+  } else if constexpr (std::floating_point<T>) {
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 17).ptr;
+    return std::string(buffer, end);
+  } else {
+    return number_text(static_cast<long double>(x));
+  }
+}
+
+// The wording of an interval in a message: "must be finite", "must be finite and > 0",
+// "must lie in (0, 1]".
+template <class T>
+std::string requirement_text(const Interval<T>& domain) {
+  const bool unbounded_below = domain.lower == -std::numeric_limits<T>::infinity();
+  const bool unbounded_above = domain.upper == std::numeric_limits<T>::infinity();
+  if (unbounded_below && unbounded_above) return "must be finite";
+  if (unbounded_above) return std::string("must be finite and ") + (domain.lower_closed ? ">= " : "> ") + number_text(domain.lower);
+  if (unbounded_below) return std::string("must be finite and ") + (domain.upper_closed ? "<= " : "< ") + number_text(domain.upper);
+  return std::string("must lie in ") + (domain.lower_closed ? '[' : '(') + number_text(domain.lower) + ", " +
+         number_text(domain.upper) + (domain.upper_closed ? ']' : ')');
+}
+
 template <class T>
 [[noreturn]] void throw_domain_error(std::string_view function, std::string_view argument, const T& value,
                                      std::string_view requirement) {
-  std::ostringstream message;
-  message.precision(17);
-  message << "fluidbed::" << function << ": argument '" << argument << "' = " << value << " is out of domain ("
-          << requirement << ")";
-  throw std::domain_error(message.str());
+  throw std::domain_error("fluidbed::" + std::string(function) + ": argument '" + std::string(argument) +
+                          "' = " + number_text(value) + " is out of domain (" + std::string(requirement) + ")");
 }
 
 template <class T>
 bool is_finite_number(const T& x) {
-  using std::isfinite;
-  return isfinite(x);
-}
-
-// Throws unless x is finite and inside the interval from lower to upper, each end open or
-// closed; the message writes the interval in the usual bracket notation.
-template <class T>
-void require_in_interval(std::string_view function, std::string_view argument, const T& x, const T& lower,
-                         bool lower_closed, const T& upper, bool upper_closed) {
-  const bool above = lower_closed ? x >= lower : x > lower;
-  const bool below = upper_closed ? x <= upper : x < upper;
-  if (is_finite_number(x) && above && below) return;
-  std::ostringstream range;
-  range.precision(17);
-  range << "must lie in " << (lower_closed ? '[' : '(') << lower << ", " << upper << (upper_closed ? ']' : ')');
-  throw_domain_error(function, argument, x, range.str());
+  return x - x == T(0);
 }
 
 }  // namespace detail
+
+// Throws std::domain_error naming the first argument outside its interval: the checked form
+// of the hot path's FLUIDBED_EXPECTS(within(list)).
+template <class T, std::size_t N>
+void require_within(std::string_view function, const Arguments<T, N>& list) {
+  for (const Argument<T>& argument : list)
+    if (!argument.domain.contains(argument.value))
+      detail::throw_domain_error(function, argument.name, argument.value,
+                                 argument.requirement.empty() ? detail::requirement_text(argument.domain)
+                                                              : std::string(argument.requirement));
+}
+
+// Throws unless x lies in `domain` (one argument).
+template <class T>
+void require_in(std::string_view function, std::string_view argument, const T& x, const Interval<T>& domain) {
+  require_within(function, arguments(Argument<T>{argument, x, domain}));
+}
 
 // For the checked entry points, after the evaluation: throws std::domain_error unless the
 // result `value` is finite. Arguments that pass validation can still have a result the
@@ -60,11 +90,19 @@ template <class T, class DescribeArguments>
 void require_finite_result(std::string_view function, std::string_view result, const T& value,
                            const DescribeArguments& describe_arguments) {
   if (detail::is_finite_number(value)) return;
-  std::ostringstream message;
-  message.precision(17);
-  message << "fluidbed::" << function << ": result '" << result << "' = " << value << " is not finite for "
-          << describe_arguments() << " (arguments in the domain, result out of the range of the floating type)";
-  throw std::domain_error(message.str());
+  throw std::domain_error("fluidbed::" + std::string(function) + ": result '" + std::string(result) + "' = " +
+                          detail::number_text(value) + " is not finite for " + std::string(describe_arguments()) +
+                          " (arguments in the domain, result out of the range of the floating type)");
+}
+
+// The arguments of a list as text, "name = value, name = value", for the messages of
+// require_finite_result.
+template <class T, std::size_t N>
+std::string describe(const Arguments<T, N>& list) {
+  std::string text;
+  for (const Argument<T>& argument : list)
+    text += (text.empty() ? "" : ", ") + std::string(argument.name) + " = " + detail::number_text(argument.value);
+  return text;
 }
 
 // The name of element `index` of an array argument, e.g. indexed_argument("fractions", 2)
@@ -76,7 +114,7 @@ inline std::string indexed_argument(std::string_view array, std::size_t index) {
 // Throws unless x is finite (any sign).
 template <class T>
 void require_finite(std::string_view function, std::string_view argument, const T& x) {
-  if (!detail::is_finite_number(x)) detail::throw_domain_error(function, argument, x, "must be finite");
+  require_in(function, argument, x, domains::finite<T>());
 }
 
 // Throws unless every element of `values` (an array, a span, a Vector3) is finite, naming the
@@ -94,42 +132,40 @@ void require_finite_elements(std::string_view function, std::string_view argumen
 // Throws unless x is finite and x > 0.
 template <class T>
 void require_positive(std::string_view function, std::string_view argument, const T& x) {
-  if (!detail::is_finite_number(x) || !(x > 0))
-    detail::throw_domain_error(function, argument, x, "must be finite and > 0");
+  require_in(function, argument, x, domains::positive<T>());
 }
 
 // Throws unless x is finite and x >= 0.
 template <class T>
 void require_non_negative(std::string_view function, std::string_view argument, const T& x) {
-  if (!detail::is_finite_number(x) || !(x >= 0))
-    detail::throw_domain_error(function, argument, x, "must be finite and >= 0");
+  require_in(function, argument, x, domains::non_negative<T>());
 }
 
 // Throws unless x is finite and lower < x <= upper.
 template <class T>
 void require_in_half_open(std::string_view function, std::string_view argument, const T& x, const T& lower,
                           const T& upper) {
-  detail::require_in_interval(function, argument, x, lower, false, upper, true);
+  require_in(function, argument, x, domains::half_open(lower, upper));
 }
 
 // Throws unless x is finite and lower <= x < upper.
 template <class T>
 void require_in_closed_open(std::string_view function, std::string_view argument, const T& x, const T& lower,
                             const T& upper) {
-  detail::require_in_interval(function, argument, x, lower, true, upper, false);
+  require_in(function, argument, x, domains::closed_open(lower, upper));
 }
 
 // Throws unless x is finite and lower < x < upper.
 template <class T>
 void require_in_open(std::string_view function, std::string_view argument, const T& x, const T& lower, const T& upper) {
-  detail::require_in_interval(function, argument, x, lower, false, upper, false);
+  require_in(function, argument, x, domains::open(lower, upper));
 }
 
 // Throws unless x is finite and lower <= x <= upper.
 template <class T>
 void require_in_closed(std::string_view function, std::string_view argument, const T& x, const T& lower,
                        const T& upper) {
-  detail::require_in_interval(function, argument, x, lower, true, upper, true);
+  require_in(function, argument, x, domains::closed(lower, upper));
 }
 
 }  // namespace fluidbed

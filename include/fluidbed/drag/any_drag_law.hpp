@@ -9,11 +9,10 @@
 
 #include <array>
 #include <optional>
-#include <stdexcept>
-#include <string>
 #include <string_view>
 #include <variant>
 
+#include "../core/registry.hpp"
 #include "beetstra.hpp"
 #include "constant_exponent.hpp"
 #include "di_felice.hpp"
@@ -28,49 +27,28 @@
 
 namespace fluidbed::drag {
 
-using AnyDragLaw = std::variant<Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
-                                DiFelice<DallavalleCoefficient>, DiFelice<SchillerNaumannCoefficient>, MazzeiLettieri,
-                                VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
-
-// One instance of every law of the family, each preset included.
-inline constexpr std::array all_drag_laws{
-    AnyDragLaw{Ergun{}},
-    AnyDragLaw{ConstantExponentDrag::lewis_1949()},
-    AnyDragLaw{ConstantExponentDrag::wen_yu_1966()},
-    AnyDragLaw{ConstantExponentDrag::kmiec_1982()},
-    AnyDragLaw{ConstantExponentDrag::wen_yu_gidaspow()},
-    AnyDragLaw{GidaspowSwitched{}},
-    AnyDragLaw{GidaspowBlended{}},
-    AnyDragLaw{DiFelice<DallavalleCoefficient>{}},
-    AnyDragLaw{DiFelice<SchillerNaumannCoefficient>{}},
-    AnyDragLaw{MazzeiLettieri{}},
-    AnyDragLaw{VanDerHoef2005{}},
-    AnyDragLaw{Beetstra2007{}},
-    AnyDragLaw{Tang2015{}},
-    AnyDragLaw{Tenneti2011{}},
-    AnyDragLaw{KochHill{}},
-    AnyDragLaw{SyamlalOBrien{}},
+struct DragFamily {
+  static constexpr std::string_view what = "drag law";
 };
 
-inline std::string_view name_of(const AnyDragLaw& law) {
-  return std::visit([](const auto& l) { return l.name(); }, law);
-}
+// The registry of the family: every law, each preset included (registry.hpp). Extend it
+// with a law of your own: `using MyDragLaws = DragLaws::with<MyLaw>;`.
+using DragLaws = Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
+                          DiFelice<DallavalleCoefficient>, DiFelice<SchillerNaumannCoefficient>, MazzeiLettieri,
+                          VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
+
+using AnyDragLaw = DragLaws::Variant;
+
+// One instance of every law of the family, each preset included.
+inline constexpr std::array all_drag_laws = DragLaws::all();
+
+inline constexpr std::string_view name_of(const AnyDragLaw& law) { return DragLaws::name_of(law); }
 
 // The law called `name`, or nothing.
-inline std::optional<AnyDragLaw> find_drag_law(std::string_view name) {
-  for (const AnyDragLaw& law : all_drag_laws)
-    if (name_of(law) == name) return law;
-  return std::nullopt;
-}
+inline constexpr std::optional<AnyDragLaw> find_drag_law(std::string_view name) { return DragLaws::find(name); }
 
 // The law called `name`; throws std::invalid_argument listing the known names.
-inline AnyDragLaw make_drag_law(std::string_view name) {
-  if (auto law = find_drag_law(name)) return *law;
-  std::string known;
-  for (const AnyDragLaw& law : all_drag_laws) known += std::string(known.empty() ? "" : ", ") + std::string(name_of(law));
-  throw std::invalid_argument("fluidbed::drag::make_drag_law: unknown drag law '" + std::string(name) +
-                              "'; known laws: " + known);
-}
+inline AnyDragLaw make_drag_law(std::string_view name) { return DragLaws::make(name); }
 
 // β of a run-time-selected law.
 template <class T>

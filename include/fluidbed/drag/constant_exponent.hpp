@@ -1,6 +1,7 @@
 // fluidbed — the constant-exponent (Lewis / Wen–Yu / Kmiec) family of drag laws.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -52,6 +53,11 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
   static constexpr ConstantExponentDrag wen_yu_gidaspow() {
     return {2.65, "WenYuGidaspow",
             "Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press (the CFD codes' \"WenYu\")"};
+  }
+
+  // The presets, for the family's registry.
+  static constexpr std::array<ConstantExponentDrag, 4> registered() {
+    return {lewis_1949(), wen_yu_1966(), kmiec_1982(), wen_yu_gidaspow()};
   }
 
   constexpr double exponent() const { return exponent_; }

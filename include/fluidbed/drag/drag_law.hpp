@@ -22,11 +22,12 @@
 #pragma once
 
 #include <limits>
-#include <sstream>
 #include <string>
 #include <string_view>
 
+#include "../core/closure.hpp"
 #include "../core/config.hpp"
+#include "../core/domain.hpp"
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
 #include "../properties.hpp"
@@ -130,14 +131,21 @@ class DragCoefficientWithDerivatives {
   T slip_;
 };
 
+// The domain of a state, declared once: ε ∈ (0, 1], w >= 0, ρ_f, μ_f, d > 0, all finite. The
+// hot path asserts it (debug builds), the checked entry points throw on it.
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 5> domain(const DragState<T>& s) {
+  return {{{"voidage", s.voidage, domains::half_open(T(0), T(1))},
+           {"slip", s.slip, domains::non_negative<T>()},
+           {"fluid.density", s.fluid.density, domains::positive<T>()},
+           {"fluid.viscosity", s.fluid.viscosity, domains::positive<T>()},
+           {"diameter", s.diameter, domains::positive<T>()}}};
+}
+
 // Validates a state for the checked entry points; `function` names the caller.
 template <class T>
 void validate(std::string_view function, const DragState<T>& s) {
-  require_in_half_open(function, "voidage", s.voidage, T(0), T(1));
-  require_non_negative(function, "slip", s.slip);
-  require_positive(function, "fluid.density", s.fluid.density);
-  require_positive(function, "fluid.viscosity", s.fluid.viscosity);
-  require_positive(function, "diameter", s.diameter);
+  require_within(function, domain(s));
 }
 
 namespace detail {
@@ -145,11 +153,7 @@ namespace detail {
 // The state as text, for the messages of the checked entry points.
 template <class T>
 std::string describe_state(const DragState<T>& s) {
-  std::ostringstream text;
-  text.precision(17);
-  text << "state {voidage = " << s.voidage << ", slip = " << s.slip << ", fluid.density = " << s.fluid.density
-       << ", fluid.viscosity = " << s.fluid.viscosity << ", diameter = " << s.diameter << "}";
-  return text.str();
+  return "state {" + describe(domain(s)) + "}";
 }
 
 // The names the checked entry points give the results they check, per convention.
@@ -208,8 +212,7 @@ struct DragLaw {
   // beyond (μ_f/d² or ε^−n overflowing) +∞, or NaN where ∞ meets an exact 0: `checked` reports it.
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr DragCoefficient<T> operator()(const DragState<T>& s) const {
-    FLUIDBED_EXPECTS(s.voidage > T(0) && s.voidage <= T(1) && s.slip >= T(0));
-    FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0) && s.diameter > T(0));
+    FLUIDBED_EXPECTS(within(domain(s)));
     return DragCoefficient<T>(Law::native_buoyancy, self().native_beta(s.voidage, s.slip, s.fluid, s.diameter),
                               s.voidage);
   }
@@ -217,8 +220,7 @@ struct DragLaw {
   // Hot path with ∂β/∂ε and ∂β/∂w (same preconditions).
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr DragCoefficientWithDerivatives<T> with_derivatives(const DragState<T>& s) const {
-    FLUIDBED_EXPECTS(s.voidage > T(0) && s.voidage <= T(1) && s.slip >= T(0));
-    FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0) && s.diameter > T(0));
+    FLUIDBED_EXPECTS(within(domain(s)));
     using D = Dual<T, 2>;
     const D beta = self().native_beta(D::variable(s.voidage, 0), D::variable(s.slip, 1), s.fluid, s.diameter);
     return DragCoefficientWithDerivatives<T>(Law::native_buoyancy,
