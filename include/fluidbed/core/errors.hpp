@@ -105,6 +105,37 @@ std::string describe(const Arguments<T, N>& list) {
   return text;
 }
 
+// Error policies, for the functions that are not closures of a family (relations, solvers,
+// the bed-expansion and stability helpers): one entry point whose last argument picks what
+// happens to arguments outside their domain, in the manner of Boost.Math's policies,
+//   bed_height(h0, e0, e)                       hot path: asserted in debug builds;
+//   bed_height(h0, e0, e, fluidbed::checked)    throws std::domain_error.
+// (Closures have the member .checked(...) instead, from their family's base.)
+struct Unchecked {};
+struct Checked {};
+inline constexpr Unchecked unchecked{};
+inline constexpr Checked checked{};
+
+template <class Policy>
+concept ErrorPolicy = std::same_as<Policy, Unchecked> || std::same_as<Policy, Checked>;
+
+// The domain check of an entry point under `Policy`.
+template <ErrorPolicy Policy, class T, std::size_t N>
+constexpr void check_domain(Policy, std::string_view function, const Arguments<T, N>& list) {
+  if constexpr (std::same_as<Policy, Checked>)
+    require_within(function, list);
+  else
+    FLUIDBED_EXPECTS(within(list));
+}
+
+// The result check of an entry point under `Policy`: the checked path throws unless the
+// result is finite (require_finite_result); the hot path returns it as it is.
+template <ErrorPolicy Policy, class T, class DescribeArguments>
+constexpr void check_result(Policy, std::string_view function, std::string_view result, const T& value,
+                            const DescribeArguments& describe_arguments) {
+  if constexpr (std::same_as<Policy, Checked>) require_finite_result(function, result, value, describe_arguments);
+}
+
 // The name of element `index` of an array argument, e.g. indexed_argument("fractions", 2)
 // is "fractions[2]".
 inline std::string indexed_argument(std::string_view array, std::size_t index) {
