@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "fluidbed/drag/constant_exponent.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
 #include "fluidbed/elastic/elastic_modulus.hpp"
 #include "ratio_reporter.hpp"

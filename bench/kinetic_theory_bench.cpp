@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "fluidbed/drag/constant_exponent.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/kinetic_theory.hpp"
 #include "ratio_reporter.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "fluidbed/drag/constant_exponent.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
 #include "fluidbed/settling.hpp"

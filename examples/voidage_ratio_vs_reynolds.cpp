@@ -40,7 +40,7 @@
 #include <utility>
 #include <vector>
 
-#include "fluidbed/drag/constant_exponent.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/drag/di_felice.hpp"
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"

@@ -30,7 +30,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/drag.hpp"
 #include "fuzz_input.hpp"
 
 using namespace fluidbed;

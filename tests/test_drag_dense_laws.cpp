@@ -17,7 +17,7 @@
 #include <limits>
 #include <vector>
 
-#include "fluidbed/drag/beetstra.hpp"
+#include "fluidbed/drag/beetstra_polydisperse.hpp"
 #include "fluidbed/drag/koch_hill.hpp"
 #include "fluidbed/drag/syamlal_obrien.hpp"
 #include "fluidbed/drag/tang.hpp"

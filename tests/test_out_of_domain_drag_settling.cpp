@@ -9,7 +9,7 @@
 #include <span>
 #include <variant>
 
-#include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/drag.hpp"
 #include "fluidbed/settling.hpp"
 #include "test_out_of_domain.hpp"
 #include "test_scalar_types.hpp"

@@ -10,7 +10,7 @@
 #include <span>
 #include <string>
 
-#include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/drag.hpp"
 #include "same_arithmetic.hpp"
 #include "test_scalar_types.hpp"
 

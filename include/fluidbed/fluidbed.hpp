@@ -1,7 +1,7 @@
 // fluidbed — umbrella header: every closure of the library.
 #pragma once
 
-#include "drag/any_drag_law.hpp"
+#include "drag.hpp"
 #include "settling.hpp"
 #include "elastic.hpp"
 #include "kinetic_theory.hpp"

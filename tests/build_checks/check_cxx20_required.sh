@@ -19,7 +19,7 @@ for compiler in g++ clang++; do
       checked=$((checked + 1))
       continue
     fi
-    first_error=$(grep -m1 -E "error" "$work/out.txt" || true)
+    first_error=$(grep -m1 -E "error:" "$work/out.txt" || true)
     if [[ $first_error != *"fluidbed needs C++20"* ]]; then
       echo "$compiler, $header: the first error is not fluidbed's C++20 message: $first_error"
       failures=$((failures + 1))

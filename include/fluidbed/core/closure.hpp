@@ -9,6 +9,8 @@
 // the closures of a family; the catalogue, the tests and the bindings read these members.
 #pragma once
 
+#include "config.hpp"  // first: its C++20 check precedes any C++20-only header
+
 #include <array>
 #include <concepts>
 #include <cstddef>

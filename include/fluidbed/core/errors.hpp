@@ -8,6 +8,8 @@
 // Numbers are written with 17 significant digits (std::to_chars), without <sstream>.
 #pragma once
 
+#include "config.hpp"  // first: its C++20 check precedes any C++20-only header
+
 #include <charconv>
 #include <concepts>
 #include <cstddef>

@@ -17,6 +17,8 @@
 // std::string_view what`, the kind of closure in an error message ("drag law").
 #pragma once
 
+#include "config.hpp"  // first: its C++20 check precedes any C++20-only header
+
 #include <array>
 #include <cstddef>
 #include <optional>

@@ -3,7 +3,7 @@
 // Every law shares one calling shape (drag_law.hpp), so a host can pick one at compile
 // time (use the type) or at run time: AnyDragLaw is a std::variant of the family, and
 // make_drag_law(name) returns the law of that name (the names are those of `name()`).
-// The polydisperse Beetstra law (beetstra.hpp) takes a mixture, not one state, and so
+// The polydisperse Beetstra law (beetstra_polydisperse.hpp) takes a mixture, not one state, and so
 // is not a member of this monodisperse family.
 #pragma once
 
@@ -14,7 +14,6 @@
 
 #include "../core/registry.hpp"
 #include "beetstra.hpp"
-#include "constant_exponent.hpp"
 #include "di_felice.hpp"
 #include "drag_law.hpp"
 #include "ergun.hpp"
@@ -24,6 +23,8 @@
 #include "syamlal_obrien.hpp"
 #include "tang.hpp"
 #include "tenneti.hpp"
+#include "van_der_hoef.hpp"
+#include "wen_yu.hpp"
 
 namespace fluidbed::drag {
 

@@ -6,7 +6,7 @@
 
 #include "../core/constants.hpp"
 #include "../core/dual.hpp"
-#include "constant_exponent.hpp"
+#include "wen_yu.hpp"
 #include "drag_law.hpp"
 #include "ergun.hpp"
 
@@ -18,7 +18,7 @@ namespace fluidbed::drag {
 //   β = β_WenYuGidaspow            for ε >= 0.8
 //
 // (both in the pressure-gradient convention, which is native here; see ergun.hpp and
-// constant_exponent.hpp for the two laws and their Reynolds numbers).
+// wen_yu.hpp for the two laws and their Reynolds numbers).
 // The law is discontinuous at ε = 0.8: the ratio Wen–Yu/Ergun there is 0.89 at Re = 0.1
 // and 0.27 at Re = 1000 (seed 002 eqs. 45, 46). The switch follows OpenFOAM's rule
 // (Wen–Yu at ε = 0.8 exactly). Use GidaspowBlended for a continuous law.

@@ -7,7 +7,7 @@
 #include "../core/config.hpp"
 #include "../core/dual.hpp"
 #include "../properties.hpp"
-#include "beetstra.hpp"
+#include "van_der_hoef.hpp"
 #include "dimensionless_force.hpp"
 #include "drag_law.hpp"
 
@@ -20,7 +20,7 @@ namespace fluidbed::drag {
 //   F(φ, Re) = F0(φ) + (0.11 φ (1 + φ) − 0.00456/ε⁴) Re + (0.169 ε + 0.0644/ε⁴) Re^0.657
 //   β_pressure_gradient = 18 μ_f ε φ F / d²,    Re = ρ_f ε w d / μ_f (superficial slip),
 //
-// F0 the van der Hoef (2005) Stokes term (beetstra.hpp), F in the drag-only normalisation.
+// F0 the van der Hoef (2005) Stokes term (van_der_hoef.hpp), F in the drag-only normalisation.
 // Native convention: pressure_gradient (as MFiX TPKKV, MFIX-Exa "BVK2" and waLBerla use
 // it). Not in the seeds. Validity: the fitted simulations, 0.1 ≤ φ ≤ 0.6 and Re ≤ 1000;
 // F(φ, 0) = F0 exactly.
