@@ -19,23 +19,9 @@ using namespace fluidbed;
 constexpr int cells = 256;
 constexpr int outputs_per_law = 3;  // β (pressure-gradient buoyancy), ∂β/∂ε, ∂β/∂w
 
-// The monodisperse family, as compile-time types so that the device sees every kernel.
-FLUIDBED_HOST_DEVICE auto drag_family() {
-  using namespace drag;
-  return std::tuple{Ergun{},
-                    ConstantExponentDrag::wen_yu_1966(),
-                    GidaspowSwitched{},
-                    GidaspowBlended{},
-                    DiFelice<DallavalleCoefficient>{},
-                    DiFelice<SchillerNaumannCoefficient>{},
-                    MazzeiLettieri{},
-                    VanDerHoef2005{},
-                    Beetstra2007{},
-                    Tang2015{},
-                    Tenneti2011{},
-                    KochHill{},
-                    SyamlalOBrien{}};
-}
+// The monodisperse family from its registry, every law and preset as its own type, so that the
+// device sees every kernel.
+FLUIDBED_HOST_DEVICE constexpr auto drag_family() { return drag::DragLaws::instances(); }
 constexpr int laws = int(std::tuple_size_v<decltype(drag_family())>);
 
 FLUIDBED_HOST_DEVICE drag::DragState<double> cell_state(int i) {

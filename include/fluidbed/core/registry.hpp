@@ -54,10 +54,14 @@ struct Registry {
 
   static constexpr std::size_t size = (detail::registered_instances<Laws>().size() + ...);
 
-  // One instance of every closure, presets included, in the order of the type list.
+  // One instance of every closure, presets included, in the order of the type list, each as
+  // its own type: a std::tuple that compile-time code (a device kernel, a benchmark) walks
+  // with std::apply, seeing every kernel without a std::visit.
+  static constexpr auto instances() { return std::tuple_cat(detail::registered_instances<Laws>()...); }
+
+  // The same instances as Variants, for run-time selection.
   static constexpr std::array<Variant, size> all() {
-    return std::apply([](const auto&... law) { return std::array<Variant, size>{Variant{law}...}; },
-                      std::tuple_cat(detail::registered_instances<Laws>()...));
+    return std::apply([](const auto&... law) { return std::array<Variant, size>{Variant{law}...}; }, instances());
   }
 
   // Calls f(std::type_identity<Law>{}) for every type of the list.
