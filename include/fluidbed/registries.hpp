@@ -1,0 +1,23 @@
+// fluidbed — every family's registry in one list, for the code that enumerates every closure
+// of the library: bindings, the catalogue check, the tests. A family added to the library adds
+// its registry here (a user's own registries are lists of the same kind).
+#pragma once
+
+#include <type_traits>
+
+#include "drag.hpp"
+
+namespace fluidbed {
+
+template <class... Registry>
+struct RegistryList {
+  // Calls f(std::type_identity<Registry>{}) for every registry of the list.
+  template <class F>
+  static constexpr void for_each(F&& f) {
+    (f(std::type_identity<Registry>{}), ...);
+  }
+};
+
+using Registries = RegistryList<drag::DragLaws>;
+
+}  // namespace fluidbed
