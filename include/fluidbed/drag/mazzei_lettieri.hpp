@@ -53,7 +53,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   // implicit function theorem: one Newton step taken in S from the converged root.
   template <class S>
   FLUIDBED_HOST_DEVICE static S effective_reynolds(const S& voidage, const S& re) {
-    using T = std::remove_cvref_t<decltype(value_of(re))>;
+    using T = value_type_of<S>;
     using std::pow;
     const T re_value = value_of(re);
     if (!(re_value > T(0))) return re * pow(voidage, T(-4.8L));  // Re* = Re ε^−4.8 as Re → 0

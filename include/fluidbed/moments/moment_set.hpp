@@ -20,14 +20,13 @@
 #pragma once
 
 #include <array>
-#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <limits>
 #include <span>
-#include <sstream>
 #include <string>
 
 #include "../core/config.hpp"
+#include "../core/constants.hpp"
 #include "../core/errors.hpp"
 #include "jacobi_eigen.hpp"
 
@@ -214,11 +213,10 @@ T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   require_in_half_open(function, "voidage", voidage, T(0), T(1));
   const T moment = sieve_moment(psd, voidage, k);
   if (!fluidbed::detail::is_finite_number(moment)) {
-    std::ostringstream requirement;
-    requirement.precision(17);
-    requirement << "M_k of these edges and fractions evaluates to " << moment
-                << ": beyond the range of the floating type";
-    fluidbed::detail::throw_domain_error(function, "k", k, requirement.str());
+    fluidbed::detail::throw_domain_error(function, "k", k,
+                                         "M_k of these edges and fractions evaluates to " +
+                                             fluidbed::detail::number_text(moment) +
+                                             ": beyond the range of the floating type");
   }
   return moment;
 }
@@ -309,7 +307,7 @@ FLUIDBED_HOST_DEVICE T solids_volume_fraction(std::span<const T> m) {
 // φ_i and diameter ξ_i (the n_i of the force terms of seed 000 eq. 6.8).
 template <class T>
 FLUIDBED_HOST_DEVICE T class_number_density(const T& volume_fraction, const T& diameter) {
-  return T(6) * volume_fraction / (boost::math::constants::pi<T>() * diameter * diameter * diameter);
+  return T(6) * volume_fraction / (numbers::pi<T>() * diameter * diameter * diameter);
 }
 
 // VDF moments from NDF moments: M_k = (π/6) μ_{k+3}, k = 0 … vdf.size() − 1, where
@@ -322,7 +320,7 @@ FLUIDBED_HOST_DEVICE bool vdf_from_ndf_moments(std::span<const T> ndf_from_order
     return false;
   }
   for (std::size_t k = 0; k < vdf.size(); ++k)
-    vdf[k] = boost::math::constants::pi<T>() / T(6) * ndf_from_order_3[k];
+    vdf[k] = numbers::pi<T>() / T(6) * ndf_from_order_3[k];
   return true;
 }
 
@@ -335,7 +333,7 @@ FLUIDBED_HOST_DEVICE bool ndf_from_vdf_moments(std::span<const T> vdf, std::span
     detail::fill_with_nan(ndf_from_order_3);
     return false;
   }
-  for (std::size_t k = 0; k < vdf.size(); ++k) ndf_from_order_3[k] = T(6) * vdf[k] / boost::math::constants::pi<T>();
+  for (std::size_t k = 0; k < vdf.size(); ++k) ndf_from_order_3[k] = T(6) * vdf[k] / numbers::pi<T>();
   return true;
 }
 
