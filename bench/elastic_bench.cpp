@@ -82,13 +82,14 @@ void mazzei_lettieri_with_elastic(benchmark::State& run) {
 
 void wen_yu_with_jean_fan(benchmark::State& run) {
   const drag::ConstantExponentDrag law = drag::ConstantExponentDrag::wen_yu_1966();
+  const elastic::JeanFanModulus jean_fan{};  // H = −4.8/ε, whatever Re*
   for (auto _ : run) {
     double sum = 0;
     for (const Cell& c : field) {
       const double beta = law.native_beta(c.voidage, magnitude(c.slip), air, diameter);
       const Vector3<double> f = scaled(beta, c.slip);
       const Vector3<double> e =
-          elastic::elastic_force(f, c.gradient, elastic::constant_exponent_sensitivity(c.voidage), diameter);
+          elastic::elastic_force(f, c.gradient, elastic::voidage_sensitivity(jean_fan, c.voidage, 0.0), diameter);
       sum += f[0] + f[1] + f[2] + e[0] + e[1] + e[2];
     }
     benchmark::DoNotOptimize(sum);

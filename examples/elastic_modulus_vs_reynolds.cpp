@@ -57,8 +57,8 @@ double alpha_d(double re) { return fluidbed::drag::DiFelice<>::exponent(re) - 1.
 
 // E_r^e/E_j = H(ε, Re_t)/(−4.8/ε).
 double modulus_ratio(double voidage, double re_t) {
-  return fluidbed::elastic::mazzei_lettieri_functions(voidage, re_t).voidage_sensitivity /
-         fluidbed::elastic::constant_exponent_sensitivity(voidage);
+  using namespace fluidbed::elastic;
+  return voidage_sensitivity(MazzeiLettieriModulus{}, voidage, re_t) / voidage_sensitivity(JeanFanModulus{}, voidage, re_t);
 }
 
 struct Minimum {

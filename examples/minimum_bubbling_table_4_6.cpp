@@ -24,8 +24,8 @@ namespace {
 
 using namespace fluidbed::elastic;
 
-constexpr ElasticModel models[3] = {ElasticModel::foscolo_gibilaro, ElasticModel::jean_fan,
-                                    ElasticModel::mazzei_lettieri};
+// Foscolo–Gibilaro, Jean–Fan, Mazzei–Lettieri: the registry's order, the table's columns.
+constexpr auto models = ElasticModuli::all();
 
 double printed(const seed000::BubblingRow& row, int model) {
   return model == 0 ? row.foscolo_gibilaro : model == 1 ? row.jean_fan : row.mazzei_lettieri;

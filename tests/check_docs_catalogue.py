@@ -41,7 +41,7 @@ import re
 import sys
 from pathlib import Path
 
-FAMILIES = ("drag", "settling", "elastic", "kinetic_theory", "moments")
+FAMILIES = ("drag", "settling", "elastic", "interaction", "kinetic_theory", "moments")
 
 # ----------------------------------------------------------------------------- C++ scanning
 

@@ -1,4 +1,5 @@
-// Elastic modulus and elastic force (seed 000 §3.5) and the other interaction forces (§3.3).
+// Elastic modulus and elastic force (seed 000 §3.5), the other interaction forces (§3.3,
+// interaction/) and the family's calling shape (ElasticModulus, ElasticModuli).
 // References: the independent mpmath generator tests/reference/stability_reference.py
 // (elastic_functions_reference.csv, elastic_state_reference.csv), an E_r^e/E_j table from an
 // independent double-precision evaluation of eqs. 3.95 and 3.111 made when the thesis was read,
@@ -9,15 +10,20 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <variant>
 
 #include "fluidbed/core/dual.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
 #include "fluidbed/elastic.hpp"
+#include "fluidbed/interaction.hpp"
 #include "reference_table.hpp"
 #include "same_arithmetic.hpp"
+#include "test_out_of_domain.hpp"
 
 using namespace fluidbed;
 using namespace fluidbed::elastic;
+using namespace fluidbed::interaction;
 
 namespace {
 
@@ -27,6 +33,17 @@ const Particles<double> fcc{.density = 1210.0, .diameter = 137e-6};  // Table 4.
 
 double relative_difference(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
+// FCC in air at equilibrium at this voidage and terminal Reynolds number.
+EquilibriumState<double> fcc_at(double voidage, double terminal_reynolds = 4.0) {
+  return {voidage, air, fcc, terminal_reynolds, g};
+}
+
+// The state (ε, w) of FCC particles in a fluid.
+drag::DragState<double> state_of(double voidage, double slip, const Fluid<double>& fluid = air,
+                                 double diameter = fcc.diameter) {
+  return {voidage, slip, fluid, diameter};
+}
+
 // F̂ = π d³/(6(1 − ε)) β w, the drag on one particle (eq. 3.114), from the library's drag.
 template <class S>
 S drag_per_particle(const S& voidage, const S& slip, const Fluid<double>& fluid, double diameter) {
@@ -34,6 +51,21 @@ S drag_per_particle(const S& voidage, const S& slip, const Fluid<double>& fluid,
   return pi * diameter * diameter * diameter / 6.0 * drag::MazzeiLettieri{}.native_beta(voidage, slip, fluid, diameter) *
          slip / (1.0 - voidage);
 }
+
+// A user's own model: half of Jean–Fan's modulus.
+struct HalfJeanFan : ElasticModulus<HalfJeanFan> {
+  constexpr std::string_view name() const { return "HalfJeanFan"; }
+  constexpr std::string_view reference() const { return "test"; }
+  constexpr Validity<0> validity() const { return {}; }  // no stated range
+  template <class S>
+  S sensitivity(const S& voidage, const S& re_star) const {
+    return JeanFanModulus{}.sensitivity(voidage, re_star) / 2;
+  }
+  template <class S, class T>
+  S modulus_at_equilibrium(const S& voidage, const EquilibriumState<T>& s) const {
+    return JeanFanModulus{}.modulus_at_equilibrium(voidage, s) / 2;
+  }
+};
 
 }  // namespace
 
@@ -69,7 +101,7 @@ TEST_CASE("H is finite at Re* = 0 and equals the Jean-Fan -4.8/eps there and at 
     CHECK(std::isinf(mazzei_lettieri_functions(voidage, 0.0).exponent_slope));
     CHECK(relative_difference(mazzei_lettieri_functions(voidage, 1e-12).voidage_sensitivity, -4.8 / voidage) < 1e-6);
     CHECK(relative_difference(mazzei_lettieri_functions(voidage, 1e16).voidage_sensitivity, -4.8 / voidage) < 1e-3);
-    CHECK(voidage_sensitivity(ElasticModel::jean_fan, voidage, 100.0) == -4.8 / voidage);
+    CHECK(voidage_sensitivity(JeanFanModulus{}, voidage, 100.0) == -4.8 / voidage);
   }
 }
 
@@ -82,8 +114,7 @@ TEST_CASE("E_r^e over E_j: an independently evaluated table and the limits of eq
   for (int i = 0; i < 7; ++i) {
     INFO("Re_t = " << re[i]);
     for (const auto& [voidage, expected] : {std::pair{0.5, at_half[i]}, std::pair{0.9, at_nine_tenths[i]}}) {
-      const double ratio = mazzei_lettieri_equilibrium_modulus(voidage, air, fcc, re[i], g) /
-                           jean_fan_modulus(voidage, air, fcc, g);
+      const double ratio = MazzeiLettieriModulus{}(fcc_at(voidage, re[i])) / JeanFanModulus{}(fcc_at(voidage));
       CHECK(std::abs(ratio - expected) <= 0.5e-5);
     }
   }
@@ -94,13 +125,13 @@ TEST_CASE("E_r^e over E_j: an independently evaluated table and the limits of eq
 TEST_CASE("the equilibrium moduli: eqs. 3.75 and 3.95 and their relation E_j = E_f / eps") {
   const double weight = (fcc.density - air.density) * g * fcc.diameter;
   for (const double voidage : {0.4, 0.6, 0.9, 1.0}) {
-    const double e_f = foscolo_gibilaro_modulus(voidage, air, fcc, g);
+    const double e_f = FoscoloGibilaroModulus{}(fcc_at(voidage));
     CHECK(e_f == doctest::Approx(3.2 * (1 - voidage) * weight).epsilon(1e-15));
-    CHECK(jean_fan_modulus(voidage, air, fcc, g) == doctest::Approx(e_f / voidage).epsilon(1e-15));
+    CHECK(JeanFanModulus{}(fcc_at(voidage)) == doctest::Approx(e_f / voidage).epsilon(1e-15));
   }
-  CHECK(foscolo_gibilaro_modulus(1.0, air, fcc, g) == 0.0);
-  CHECK(jean_fan_modulus(1.0, air, fcc, g) == 0.0);
-  CHECK(mazzei_lettieri_equilibrium_modulus(1.0, air, fcc, 4.0, g) == 0.0);
+  CHECK(FoscoloGibilaroModulus{}(fcc_at(1.0)) == 0.0);
+  CHECK(JeanFanModulus{}(fcc_at(1.0)) == 0.0);
+  CHECK(MazzeiLettieriModulus{}(fcc_at(1.0)) == 0.0);
 }
 
 TEST_CASE("Mazzei-Lettieri modulus off equilibrium agrees with the mpmath reference, and dF/deps = H F") {
@@ -114,7 +145,7 @@ TEST_CASE("Mazzei-Lettieri modulus off equilibrium agrees with the mpmath refere
     INFO("row " << row << ": voidage " << voidage << ", Re " << table.number(row, "reynolds"));
     CHECK(relative_difference(effective_reynolds(voidage, slip, fluid, d), table.number(row, "re_star")) < 1e-13);
     CHECK(relative_difference(mazzei_lettieri_sensitivity(voidage, slip, fluid, d), table.number(row, "H")) < 1e-13);
-    const double modulus = mazzei_lettieri_modulus(voidage, slip, fluid, d);
+    const double modulus = MazzeiLettieriModulus{}(state_of(voidage, slip, fluid, d));
     const double force = drag_per_particle(voidage, slip, fluid, d);
     CHECK(relative_difference(force, table.number(row, "drag_per_particle")) < 1e-13);
     worst_modulus = std::max(worst_modulus, relative_difference(modulus, table.number(row, "modulus")));
@@ -145,66 +176,120 @@ TEST_CASE("dF/deps = H F against a double-precision central difference of the li
   }
 }
 
-TEST_CASE("derivatives of the moduli through dual numbers match central differences") {
-  using D = Dual<double, 1>;
+TEST_CASE("with_derivatives: the moduli's derivatives through dual numbers match central differences") {
   const double step = 1e-6;
   for (const double voidage : {0.4, 0.55, 0.8, 0.95}) {
     INFO("voidage " << voidage);
-    const auto check = [&](auto modulus) {
-      const D exact = modulus(D::variable(voidage, 0));
-      const double difference = (modulus(voidage + step) - modulus(voidage - step)) / (2 * step);
-      CHECK(relative_difference(exact.derivative[0], difference) < 1e-7);
-      CHECK(test::same_arithmetic(exact.value, modulus(voidage)));
+    const auto check = [&](const auto& model, auto state_at) {
+      INFO(model.name());
+      const auto exact = model.with_derivatives(state_at(voidage));
+      const double difference = (model(state_at(voidage + step)) - model(state_at(voidage - step))) / (2 * step);
+      CHECK(relative_difference(exact.d_voidage, difference) < 1e-7);
+      CHECK(test::same_arithmetic(exact.value, model(state_at(voidage))));
+      // the checked form returns the same
+      const auto checked = model.checked_with_derivatives(state_at(voidage));
+      CHECK((checked.value == exact.value && checked.d_voidage == exact.d_voidage));
     };
-    check([](auto e) { return foscolo_gibilaro_modulus(e, air, fcc, g); });
-    check([](auto e) { return jean_fan_modulus(e, air, fcc, g); });
-    check([](auto e) { return mazzei_lettieri_equilibrium_modulus(e, air, fcc, 4.06, g); });
-    check([](auto e) {
-      using S = decltype(e);
-      return mazzei_lettieri_modulus(e, S(0.05), air, fcc.diameter);
-    });
+    const auto at_equilibrium = [](double e) { return fcc_at(e, 4.06); };
+    check(FoscoloGibilaroModulus{}, at_equilibrium);
+    check(JeanFanModulus{}, at_equilibrium);
+    check(MazzeiLettieriModulus{}, at_equilibrium);
+    check(MazzeiLettieriModulus{}, [](double e) { return state_of(e, 0.05); });
+    // the old derivative: one dual number through the kernel
+    const Dual<double, 1> dual = MazzeiLettieriModulus{}.modulus_at_equilibrium(Dual<double, 1>::variable(voidage, 0),
+                                                                                fcc_at(voidage, 4.06));
+    CHECK(MazzeiLettieriModulus{}.with_derivatives(fcc_at(voidage, 4.06)).d_voidage == dual.derivative[0]);
   }
   // and in the slip, off equilibrium
-  const D w = D::variable(0.05, 0);
-  const D e_r = mazzei_lettieri_modulus(D(0.6), w, air, fcc.diameter);
-  const double difference = (mazzei_lettieri_modulus(0.6, 0.05 + 1e-8, air, fcc.diameter) -
-                             mazzei_lettieri_modulus(0.6, 0.05 - 1e-8, air, fcc.diameter)) /
+  const ModulusWithDerivatives<double> e_r = MazzeiLettieriModulus{}.with_derivatives(state_of(0.6, 0.05));
+  const double difference = (MazzeiLettieriModulus{}(state_of(0.6, 0.05 + 1e-8)) -
+                             MazzeiLettieriModulus{}(state_of(0.6, 0.05 - 1e-8))) /
                             2e-8;
-  CHECK(relative_difference(e_r.derivative[0], difference) < 1e-6);
+  CHECK(relative_difference(e_r.d_slip, difference) < 1e-6);
+  CHECK(MazzeiLettieriModulus{}.checked_with_derivatives(state_of(0.6, 0.05)).d_slip == e_r.d_slip);
 }
 
 TEST_CASE("Mazzei-Lettieri modulus: zero at zero slip and at eps = 1, never NaN") {
-  CHECK(mazzei_lettieri_modulus(0.6, 0.0, air, fcc.diameter) == 0.0);
-  CHECK(mazzei_lettieri_modulus(1.0, 0.3, air, fcc.diameter) == 0.0);
+  CHECK(MazzeiLettieriModulus{}(state_of(0.6, 0.0)) == 0.0);
+  CHECK(MazzeiLettieriModulus{}(state_of(1.0, 0.3)) == 0.0);
   for (const double voidage : {1e-3, 0.3, 0.999999})
     for (const double slip : {0.0, 1e-12, 1.0, 1e3}) {
-      const double e = mazzei_lettieri_modulus(voidage, slip, air, fcc.diameter);
+      const double e = MazzeiLettieriModulus{}(state_of(voidage, slip));
       CHECK(std::isfinite(e));
       CHECK(e >= 0.0);
     }
 }
 
 TEST_CASE("the checked equilibrium modulus names the argument and the value") {
-  const auto message_of = [](auto call) {
-    try {
-      call();
-    } catch (const std::domain_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
-  };
-  const std::string bad_voidage =
-      message_of([] { equilibrium_modulus_checked(ElasticModel::jean_fan, 1.5, air, fcc, 4.0); });
+  const std::string bad_voidage = test::domain_error_message([] { JeanFanModulus{}.checked(fcc_at(1.5)); });
+  CHECK(bad_voidage.find("JeanFanModulus") != std::string::npos);
   CHECK(bad_voidage.find("voidage") != std::string::npos);
   CHECK(bad_voidage.find("1.5") != std::string::npos);
-  CHECK_THROWS_AS(equilibrium_modulus_checked(ElasticModel::foscolo_gibilaro, 0.0, air, fcc, 4.0), std::domain_error);
-  CHECK_THROWS_AS(equilibrium_modulus_checked(ElasticModel::mazzei_lettieri, std::nan(""), air, fcc, 4.0),
+  CHECK_THROWS_AS(FoscoloGibilaroModulus{}.checked(fcc_at(0.0)), std::domain_error);
+  CHECK_THROWS_AS(MazzeiLettieriModulus{}.checked(fcc_at(std::nan(""))), std::domain_error);
+  CHECK_THROWS_AS(MazzeiLettieriModulus{}.checked(fcc_at(0.5, -1.0)), std::domain_error);
+  CHECK_THROWS_AS(JeanFanModulus{}.checked(EquilibriumState<double>{0.5, air, Particles<double>{1210.0, -1e-4}, 4.0}),
                   std::domain_error);
-  CHECK_THROWS_AS(equilibrium_modulus_checked(ElasticModel::mazzei_lettieri, 0.5, air, fcc, -1.0), std::domain_error);
-  CHECK_THROWS_AS(equilibrium_modulus_checked(ElasticModel::jean_fan, 0.5, air, Particles<double>{1210.0, -1e-4}, 4.0),
-                  std::domain_error);
-  CHECK(equilibrium_modulus_checked(ElasticModel::mazzei_lettieri, 0.5, air, fcc, 4.0) ==
-        mazzei_lettieri_equilibrium_modulus(0.5, air, fcc, 4.0));
+  CHECK(MazzeiLettieriModulus{}.checked(fcc_at(0.5)) == MazzeiLettieriModulus{}(fcc_at(0.5)));
+}
+
+// ============================================================================ the family's shape
+
+TEST_CASE("ElasticModuli: unique names, lookup by name, unknown names listed, extension") {
+  static_assert(ElasticModuli::names_are_unique());
+  static_assert(ElasticModuli::size == 3);
+  for (const AnyElasticModulus& model : ElasticModuli::all()) {
+    const std::string_view name = ElasticModuli::name_of(model);
+    INFO(name);
+    REQUIRE(ElasticModuli::find(name).has_value());
+    CHECK(ElasticModuli::make(name).index() == model.index());
+    std::visit(
+        [](const auto& m) {
+          CHECK_FALSE(m.reference().empty());
+          CHECK(m.validity()[0].quantity == "voidage");
+          // every model through the variant equals the model itself
+          CHECK(equilibrium_modulus(ElasticModuli::Variant{m}, homogeneous_suspension(air, fcc, g), 0.5) ==
+                m(EquilibriumState<double>{0.5, air, fcc, homogeneous_suspension(air, fcc, g).terminal_reynolds, g}));
+        },
+        model);
+  }
+  // the elastic Mazzei–Lettieri name differs from the drag law's
+  CHECK(ElasticModuli::name_of(MazzeiLettieriModulus{}) != drag::MazzeiLettieri{}.name());
+  CHECK_FALSE(ElasticModuli::find("MazzeiLettieri").has_value());
+  const std::string unknown = [] {
+    try {
+      ElasticModuli::make("Bogus");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  }();
+  CHECK(unknown.find("'Bogus'") != std::string::npos);
+  for (const char* known : {"FoscoloGibilaroModulus", "JeanFanModulus", "MazzeiLettieriModulus"})
+    CHECK(unknown.find(known) != std::string::npos);
+  // a user's own model beside the library's (HalfJeanFan above)
+  using Extended = ElasticModuli::with<HalfJeanFan>;
+  static_assert(Extended::names_are_unique());
+  const auto half = Extended::make("HalfJeanFan");
+  CHECK(std::visit([](const auto& m) { return m(fcc_at(0.5)); }, half) == JeanFanModulus{}(fcc_at(0.5)) / 2);
+  CHECK(HalfJeanFan{}.with_derivatives(fcc_at(0.5)).d_voidage ==
+        JeanFanModulus{}.with_derivatives(fcc_at(0.5)).d_voidage / 2);
+}
+
+TEST_CASE("the functions of a state take the error policy: same value, checked throws naming the argument") {
+  const double e = 0.6, w = 0.05;
+  CHECK(effective_reynolds(e, w, air, fcc.diameter, fluidbed::checked) == effective_reynolds(e, w, air, fcc.diameter));
+  CHECK(mazzei_lettieri_sensitivity(e, w, air, fcc.diameter, fluidbed::checked) ==
+        mazzei_lettieri_sensitivity(e, w, air, fcc.diameter));
+  CHECK(mazzei_lettieri_drag_and_sensitivity(e, w, air, fcc.diameter, fluidbed::checked).beta ==
+        mazzei_lettieri_drag_and_sensitivity(e, w, air, fcc.diameter).beta);
+  CHECK(mazzei_lettieri_functions(e, 4.0, fluidbed::checked).voidage_sensitivity ==
+        mazzei_lettieri_functions(e, 4.0).voidage_sensitivity);
+  CHECK_THROWS_WITH_AS(effective_reynolds(e, -1.0, air, fcc.diameter, fluidbed::checked),
+                       doctest::Contains("fluidbed::effective_reynolds: argument 'slip' = -1"), std::domain_error);
+  CHECK_THROWS_WITH_AS(MazzeiLettieriModulus{}.checked(state_of(2.0, w)),
+                       doctest::Contains("fluidbed::MazzeiLettieriModulus: argument 'voidage' = 2"),
+                       std::domain_error);
 }
 
 // ============================================================================ elastic force
@@ -213,7 +298,7 @@ TEST_CASE("3-D elastic force: along the drag, E dEps/dx in 1-D, zero without dra
   const double voidage = 0.6, slip = 0.08, d = fcc.diameter;
   const double beta = drag::MazzeiLettieri{}.native_beta(voidage, slip, air, d);
   const double h = mazzei_lettieri_sensitivity(voidage, slip, air, d);
-  const double modulus = mazzei_lettieri_modulus(voidage, slip, air, d);
+  const double modulus = MazzeiLettieriModulus{}(state_of(voidage, slip, air, d));
   const Vector3<double> up{0, 0, 1};
   const Vector3<double> drag_up{0, 0, beta * slip};
   const Vector3<double> gradient{3.0, -2.0, 5.0};  // m⁻¹

@@ -1,12 +1,15 @@
-// Out-of-domain input for every checked entry point of elastic/: the moduli, the elastic
-// force, the other interaction forces and the stability of homogeneous fluidization (see
+// Out-of-domain input for every checked entry point of elastic/ and interaction/: the moduli
+// (.checked, .checked_with_derivatives), the functions of a state and the elastic force, the
+// other interaction forces and the stability of homogeneous fluidization (fluidbed::checked; see
 // test_out_of_domain.hpp for what each table entry checks), in float, double and long double.
 #include <doctest/doctest.h>
 
 #include <array>
 #include <string>
+#include <variant>
 
 #include "fluidbed/elastic.hpp"
+#include "fluidbed/interaction.hpp"
 #include "test_out_of_domain.hpp"
 #include "test_scalar_types.hpp"
 
@@ -14,9 +17,15 @@ namespace {
 
 using namespace fluidbed;
 using namespace fluidbed::elastic;
+using namespace fluidbed::interaction;
 using namespace fluidbed::test;
 
-constexpr std::array models{ElasticModel::foscolo_gibilaro, ElasticModel::jean_fan, ElasticModel::mazzei_lettieri};
+// Calls f(model, its name) for every model of the registry.
+template <class F>
+void for_each_model(const F& f) {
+  for (const AnyElasticModulus& model : ElasticModuli::all())
+    std::visit([&](const auto& m) { f(m, std::string(m.name())); }, model);
+}
 
 // ρ_f, μ_f, ρ_p, d, g of FCC in air. The particles must be heavier than the fluid: equal
 // (1.25) and lighter (1) densities are out of domain, as zero and negative ones.
@@ -64,25 +73,32 @@ HomogeneousSuspension<T> suspension_of(const ValuesOf<T>& v) {
 
 TEST_CASE_TEMPLATE("out of domain: elastic moduli at equilibrium, Table 3.1 functions and H", T,
                    FLUIDBED_SCALAR_TYPES) {
-  for (const ElasticModel model : models) {
-    check_entry_point<T>("equilibrium_modulus " + std::string(name(model)),
-                         concatenated({{"voidage", 0.5, outside_voidage, {1.0}}},
-                                      concatenated(fluidized_system, {{"terminal_reynolds", 4.0, negative, {0.0}}})),
-                         [model](const ValuesOf<T>& v) {
-                           return equilibrium_modulus_checked(model, v[0], fluid_of(v, 1), particles_of(v, 1), v[6],
-                                                              v[5]);
-                         });
-    check_entry_point<T>("voidage_sensitivity " + std::string(name(model)),
+  const std::vector<ArgumentCase> equilibrium =
+      concatenated({{"voidage", 0.5, outside_voidage, {1.0}}},
+                   concatenated(fluidized_system, {{"terminal_reynolds", 4.0, negative, {0.0}}}));
+  const auto state_of = [](const ValuesOf<T>& v) {
+    return EquilibriumState<T>{v[0], fluid_of(v, 1), particles_of(v, 1), v[6], v[5]};
+  };
+  for_each_model([&](const auto& model, const std::string& name) {
+    check_entry_point<T>(name + ".checked", equilibrium, [&](const ValuesOf<T>& v) { return model.checked(state_of(v)); });
+    check_entry_point<T>(name + ".checked_with_derivatives", equilibrium, [&](const ValuesOf<T>& v) {
+      const auto e = model.checked_with_derivatives(state_of(v));
+      return e.value + e.d_voidage;
+    });
+    const std::string expected = "fluidbed::" + name + ": argument 'voidage' = 2";
+    CHECK_THROWS_WITH_AS(model.checked(state_of({T(2), T(1.25L), T(1.8e-5L), T(1210), T(1e-4L), T(9.81L), T(4)})),
+                         doctest::Contains(expected.c_str()), std::domain_error);
+    check_entry_point<T>("voidage_sensitivity " + name,
                          {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}},
-                         [model](const ValuesOf<T>& v) { return voidage_sensitivity_checked(model, v[0], v[1]); });
-  }
+                         [&](const ValuesOf<T>& v) { return voidage_sensitivity(model, v[0], v[1], fluidbed::checked); });
+  });
   check_entry_point<T>("mazzei_lettieri_functions",
                        {{"voidage", 0.5, outside_voidage, {1.0}}, {"re_star", 4.0, negative, {0.0}}},
                        [](const ValuesOf<T>& v) {
-                         const auto f = mazzei_lettieri_functions_checked(v[0], v[1]);
+                         const auto f = mazzei_lettieri_functions(v[0], v[1], fluidbed::checked);
                          return f.exponent + f.reynolds_factor + f.drag_factor + f.voidage_sensitivity;
                        });
-  CHECK(mazzei_lettieri_functions_checked(0.5, 0.0).exponent_slope == -inf);  // N(0), documented
+  CHECK(mazzei_lettieri_functions(0.5, 0.0, fluidbed::checked).exponent_slope == -inf);  // N(0), documented
 }
 
 TEST_CASE_TEMPLATE("out of domain: functions of a state (voidage, slip): Re*, H, drag and modulus off equilibrium", T,
@@ -93,19 +109,25 @@ TEST_CASE_TEMPLATE("out of domain: functions of a state (voidage, slip): Re*, H,
       {"diameter", 1e-4, not_positive},
   };
   const auto fluid = [](const ValuesOf<T>& v) { return Fluid<T>{v[2], v[3]}; };
-  check_entry_point<T>("effective_reynolds", state,
-                       [&](const ValuesOf<T>& v) { return effective_reynolds_checked(v[0], v[1], fluid(v), v[4]); });
+  const auto drag_state = [&](const ValuesOf<T>& v) { return drag::DragState<T>{v[0], v[1], fluid(v), v[4]}; };
+  check_entry_point<T>("effective_reynolds", state, [&](const ValuesOf<T>& v) {
+    return effective_reynolds(v[0], v[1], fluid(v), v[4], fluidbed::checked);
+  });
   check_entry_point<T>("mazzei_lettieri_sensitivity", state, [&](const ValuesOf<T>& v) {
-    return mazzei_lettieri_sensitivity_checked(v[0], v[1], fluid(v), v[4]);
+    return mazzei_lettieri_sensitivity(v[0], v[1], fluid(v), v[4], fluidbed::checked);
   });
   check_entry_point<T>("mazzei_lettieri_drag_and_sensitivity", state, [&](const ValuesOf<T>& v) {
-    const auto d = mazzei_lettieri_drag_and_sensitivity_checked(v[0], v[1], fluid(v), v[4]);
+    const auto d = mazzei_lettieri_drag_and_sensitivity(v[0], v[1], fluid(v), v[4], fluidbed::checked);
     return d.beta + d.sensitivity;
   });
-  check_entry_point<T>("mazzei_lettieri_modulus", state, [&](const ValuesOf<T>& v) {
-    return mazzei_lettieri_modulus_checked(v[0], v[1], fluid(v), v[4]);
+  check_entry_point<T>("MazzeiLettieriModulus.checked", state,
+                       [&](const ValuesOf<T>& v) { return MazzeiLettieriModulus{}.checked(drag_state(v)); });
+  check_entry_point<T>("MazzeiLettieriModulus.checked_with_derivatives", state, [&](const ValuesOf<T>& v) {
+    const auto e = MazzeiLettieriModulus{}.checked_with_derivatives(drag_state(v));
+    return e.value + e.d_voidage + e.d_slip;
   });
-  CHECK(mazzei_lettieri_modulus_checked(T(1), T(0), Fluid<T>{T(1.25L), T(1.8e-5L)}, T(1e-4L)) == 0);  // ε = 1, w = 0
+  const drag::DragState<T> at_rest{T(1), T(0), Fluid<T>{T(1.25L), T(1.8e-5L)}, T(1e-4L)};
+  CHECK(MazzeiLettieriModulus{}.checked(at_rest) == 0);  // ε = 1, w = 0
 }
 
 TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED_SCALAR_TYPES) {
@@ -114,17 +136,17 @@ TEST_CASE_TEMPLATE("out of domain: elastic force, 3-D and vertical", T, FLUIDBED
                                 vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    {{"sensitivity", -4.8, non_finite}, {"diameter", 1e-4, not_positive}});
   check_entry_point<T>("elastic_force", force, [](const ValuesOf<T>& v) {
-    return sum_of(elastic_force_checked(vector_of(v, 0), vector_of(v, 3), v[6], v[7]));
+    return sum_of(elastic_force(vector_of(v, 0), vector_of(v, 3), v[6], v[7], fluidbed::checked));
   });
-  CHECK(elastic_force_checked(Vector3<T>{0, 0, 0}, Vector3<T>{0, 0, 4}, T(-4.8L), T(1e-4L)) ==
+  CHECK(elastic_force(Vector3<T>{0, 0, 0}, Vector3<T>{0, 0, 4}, T(-4.8L), T(1e-4L), fluidbed::checked) ==
         Vector3<T>{0, 0, 0});  // no drag, no force
   const std::vector<ArgumentCase> vertical =
       concatenated(concatenated({{"modulus", 0.5, non_finite}}, vector_argument("voidage_gradient", {0.0, 0.5, 4.0})),
                    vector_argument("upward", {0.0, 0.0, 1.0}));
   check_entry_point<T>("elastic_force_vertical", vertical, [](const ValuesOf<T>& v) {
-    return sum_of(elastic_force_vertical_checked(v[0], vector_of(v, 1), vector_of(v, 4)));
+    return sum_of(elastic_force_vertical(v[0], vector_of(v, 1), vector_of(v, 4), fluidbed::checked));
   });
-  CHECK_THROWS_WITH_AS(elastic_force_vertical_checked(T(1), Vector3<T>{0, 0, 1}, Vector3<T>{0, 0, 2}),
+  CHECK_THROWS_WITH_AS(elastic_force_vertical(T(1), Vector3<T>{0, 0, 1}, Vector3<T>{0, 0, 2}, fluidbed::checked),
                        doctest::Contains("'|upward|' = 2"), std::domain_error);
 }
 
@@ -135,29 +157,29 @@ TEST_CASE_TEMPLATE("out of domain: buoyancy and the other interaction forces", T
   const auto gravity = vector_argument("gravity", {0.0, 0.0, -9.81});
   check_entry_point<T>(
       "classical_buoyancy", concatenated({solid_fraction, fluid_density}, gravity),
-      [](const ValuesOf<T>& v) { return sum_of(classical_buoyancy_checked(v[0], v[1], vector_of(v, 2))); });
+      [](const ValuesOf<T>& v) { return sum_of(classical_buoyancy(v[0], v[1], vector_of(v, 2), fluidbed::checked)); });
   check_entry_point<T>("stress_buoyancy",
                        concatenated({solid_fraction}, vector_argument("fluid_stress_divergence", {0.0, 0.0, -12.0})),
-                       [](const ValuesOf<T>& v) { return sum_of(stress_buoyancy_checked(v[0], vector_of(v, 1))); });
+                       [](const ValuesOf<T>& v) { return sum_of(stress_buoyancy(v[0], vector_of(v, 1), fluidbed::checked)); });
   check_entry_point<T>(
       "pressure_gradient_buoyancy",
       concatenated({solid_fraction}, vector_argument("pressure_gradient", {0.0, 0.0, -12.0})),
-      [](const ValuesOf<T>& v) { return sum_of(pressure_gradient_buoyancy_checked(v[0], vector_of(v, 1))); });
+      [](const ValuesOf<T>& v) { return sum_of(pressure_gradient_buoyancy(v[0], vector_of(v, 1), fluidbed::checked)); });
   check_entry_point<T>(
       "homogeneous_buoyancy",
       concatenated({solid_fraction, fluid_density, {"particle_density", 1210.0, not_positive}}, gravity),
-      [](const ValuesOf<T>& v) { return sum_of(homogeneous_buoyancy_checked(v[0], v[1], v[2], vector_of(v, 3))); });
+      [](const ValuesOf<T>& v) { return sum_of(homogeneous_buoyancy(v[0], v[1], v[2], vector_of(v, 3), fluidbed::checked)); });
   check_entry_point<T>(
       "local_fluid_acceleration_force",
       concatenated({solid_fraction, fluid_density}, vector_argument("fluid_acceleration", {0.0, 1.0, 2.0})),
-      [](const ValuesOf<T>& v) { return sum_of(local_fluid_acceleration_force_checked(v[0], v[1], vector_of(v, 2))); });
+      [](const ValuesOf<T>& v) { return sum_of(local_fluid_acceleration_force(v[0], v[1], vector_of(v, 2), fluidbed::checked)); });
   check_entry_point<T>("virtual_mass_force",
                        concatenated(concatenated(concatenated({solid_fraction, fluid_density},
                                                               vector_argument("fluid_acceleration", {0.0, 1.0, 2.0})),
                                                  vector_argument("particle_acceleration", {0.5, 0.0, 1.0})),
                                     {coefficient}),
                        [](const ValuesOf<T>& v) {
-                         return sum_of(virtual_mass_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8]));
+                         return sum_of(virtual_mass_force(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8], fluidbed::checked));
                        });
   check_entry_point<T>("lift_force",
                        concatenated(concatenated(concatenated({solid_fraction, fluid_density},
@@ -165,35 +187,46 @@ TEST_CASE_TEMPLATE("out of domain: buoyancy and the other interaction forces", T
                                                  vector_argument("slip_velocity", {0.5, 0.0, 1.0})),
                                     {coefficient}),
                        [](const ValuesOf<T>& v) {
-                         return sum_of(lift_force_checked(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8]));
+                         return sum_of(lift_force(v[0], v[1], vector_of(v, 2), vector_of(v, 5), v[8], fluidbed::checked));
                        });
   check_entry_point<T>(
       "faxen_force",
       concatenated(concatenated({solid_fraction, {"fluid_viscosity", 1.8e-5, not_positive}},
                                 vector_argument("fluid_velocity_laplacian", {0.0, 1.0, 2.0})),
                    {coefficient}),
-      [](const ValuesOf<T>& v) { return sum_of(faxen_force_checked(v[0], v[1], vector_of(v, 2), v[5])); });
+      [](const ValuesOf<T>& v) { return sum_of(faxen_force(v[0], v[1], vector_of(v, 2), v[5], fluidbed::checked)); });
 }
 
 TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function and waves", T, FLUIDBED_SCALAR_TYPES) {
   check_entry_point<T>("homogeneous_suspension", fluidized_system, [](const ValuesOf<T>& v) {
-    return homogeneous_suspension_checked(fluid_of(v, 0), particles_of(v, 0), v[4]).terminal_velocity;
+    return homogeneous_suspension(fluid_of(v, 0), particles_of(v, 0), v[4], fluidbed::checked).terminal_velocity;
   });
   const std::vector<ArgumentCase> state = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage}});
-  for (const ElasticModel model : models) {
-    check_entry_point<T>("stability_function " + std::string(name(model)), state, [model](const ValuesOf<T>& v) {
-      return stability_function_checked(model, suspension_of(v), v[8]);
+  for_each_model([&](const auto& model, const std::string& name) {
+    check_entry_point<T>("stability_function " + name, state, [&](const ValuesOf<T>& v) {
+      return stability_function(model, suspension_of(v), v[8], fluidbed::checked);
     });
     // ε = 1 is in the domain: S → −∞ there (both wave speeds vanish, u_d/u_k ∝ (1 − ε)^−½).
     const auto suspension = homogeneous_suspension<T>({T(1.25L), T(1.8e-5L)}, {T(1210), T(1e-4L)});
-    CHECK(stability_function_checked(model, suspension, T(1)) == -std::numeric_limits<T>::infinity());
-    check_entry_point<T>("wave_speeds " + std::string(name(model)),
-                         concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage, {1.0}}}),
-                         [model](const ValuesOf<T>& v) {
-                           const WaveSpeeds<T> w = wave_speeds_checked(model, suspension_of(v), v[8]);
-                           return w.kinematic + w.dynamic + w.damping;
-                         });
-  }
+    CHECK(stability_function(model, suspension, T(1), fluidbed::checked) == -std::numeric_limits<T>::infinity());
+    const auto with_voidage = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage, {1.0}}});
+    check_entry_point<T>("wave_speeds " + name, with_voidage, [&](const ValuesOf<T>& v) {
+      const WaveSpeeds<T> w = wave_speeds(model, suspension_of(v), v[8], fluidbed::checked);
+      return w.kinematic + w.dynamic + w.damping;
+    });
+    check_entry_point<T>("equilibrium_modulus " + name, with_voidage, [&](const ValuesOf<T>& v) {
+      return equilibrium_modulus(model, suspension_of(v), v[8], fluidbed::checked);
+    });
+    check_entry_point<T>("dynamic_wave_speed " + name, with_voidage, [&](const ValuesOf<T>& v) {
+      return dynamic_wave_speed(model, suspension_of(v), v[8], fluidbed::checked);
+    });
+  });
+  const auto with_voidage = concatenated(suspension_fields, {{"voidage", 0.5, outside_voidage, {1.0}}});
+  check_entry_point<T>("kinematic_wave_speed", with_voidage, [](const ValuesOf<T>& v) {
+    return kinematic_wave_speed(suspension_of(v), v[8], fluidbed::checked);
+  });
+  check_entry_point<T>("damping", with_voidage,
+                       [](const ValuesOf<T>& v) { return damping(suspension_of(v), v[8], fluidbed::checked); });
   const std::vector<ArgumentCase> waves{
       {"waves.kinematic", 0.02, negative, {0.0}},
       {"waves.dynamic", 0.01, negative, {0.0}},
@@ -202,14 +235,14 @@ TEST_CASE_TEMPLATE("out of domain: homogeneous suspension, stability function an
   const auto waves_of = [](const ValuesOf<T>& v) { return WaveSpeeds<T>{v[0], v[1], v[2]}; };
   check_entry_point<T>("wave_of_wavenumber", concatenated(waves, {{"wavenumber", 100.0, not_positive}}),
                        [&](const ValuesOf<T>& v) {
-                         const Wave<T> w = wave_of_wavenumber_checked(waves_of(v), v[3]);
+                         const Wave<T> w = wave_of_wavenumber(waves_of(v), v[3], fluidbed::checked);
                          return w.growth_rate + w.velocity;
                        });
   check_entry_point<T>("growth_rate_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
-                       [&](const ValuesOf<T>& v) { return growth_rate_of_wave_velocity_checked(waves_of(v), v[3]); });
+                       [&](const ValuesOf<T>& v) { return growth_rate_of_wave_velocity(waves_of(v), v[3], fluidbed::checked); });
   check_entry_point<T>(
       "squared_wavenumber_of_wave_velocity", concatenated(waves, {{"velocity", 0.015, not_positive}}),
-      [&](const ValuesOf<T>& v) { return squared_wavenumber_of_wave_velocity_checked(waves_of(v), v[3]); });
+      [&](const ValuesOf<T>& v) { return squared_wavenumber_of_wave_velocity(waves_of(v), v[3], fluidbed::checked); });
 }
 
 TEST_CASE_TEMPLATE("out of domain: minimum bubbling point validates the suspension and the interval", T,
@@ -218,7 +251,7 @@ TEST_CASE_TEMPLATE("out of domain: minimum bubbling point validates the suspensi
       suspension_fields, {{"interval.lower", 0.25, outside_open_unit},
                           {"interval.upper", 1.0, and_non_finite({{0.25, "0.25"}, {0.0, "0"}, {1.5, "1.5"}})}});
   check_entry_point<T>("minimum_bubbling_point", arguments, [](const ValuesOf<T>& v) {
-    return minimum_bubbling_point(ElasticModel::mazzei_lettieri, suspension_of(v), VoidageInterval<T>{v[8], v[9]})
+    return minimum_bubbling_point(MazzeiLettieriModulus{}, suspension_of(v), VoidageInterval<T>{v[8], v[9]})
         .maximum_stability;
   });
 }

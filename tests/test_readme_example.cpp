@@ -59,7 +59,7 @@ TEST_CASE("README elastic-force and stability example: Table 4.6 and the force a
   const auto drag = fluidbed::scaled(d.beta, slip);
   const auto elastic = elastic_force(drag, grad_eps, d.sensitivity, 150e-6);
   const auto bed = homogeneous_suspension<double>({1.205, 1.81e-5}, {1210.0, 137e-6});
-  const auto t = minimum_bubbling_point(ElasticModel::mazzei_lettieri, bed);
+  const auto t = minimum_bubbling_point(MazzeiLettieriModulus{}, bed);
 
   // Powder 1 of seed 000 Table 4.6: ε_mb = 0.401 and u_mb = 1.15 cm/s for the Mazzei–Lettieri model.
   REQUIRE(t.bubbling_voidage.has_value());

@@ -10,13 +10,16 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <variant>
 
 #include "fluidbed/elastic.hpp"
+#include "fluidbed/interaction.hpp"
 #include "same_arithmetic.hpp"
 #include "test_scalar_types.hpp"
 
 using namespace fluidbed;
 using namespace fluidbed::elastic;
+using namespace fluidbed::interaction;
 
 namespace {
 
@@ -28,9 +31,10 @@ constexpr long double tolerance = 16;
 
 long double subtraction_condition(long double stability) { return 1 + std::abs(1 - stability) / std::abs(stability); }
 
-const std::map<std::string, ElasticModel> models = {{"foscolo_gibilaro", ElasticModel::foscolo_gibilaro},
-                                                    {"jean_fan", ElasticModel::jean_fan},
-                                                    {"mazzei_lettieri", ElasticModel::mazzei_lettieri}};
+// The models by the names of the reference table.
+const std::map<std::string, AnyElasticModulus> models = {{"foscolo_gibilaro", FoscoloGibilaroModulus{}},
+                                                         {"jean_fan", JeanFanModulus{}},
+                                                         {"mazzei_lettieri", MazzeiLettieriModulus{}}};
 
 template <class T>
 Fluid<T> fluid_of(const test::ScalarTypeRow& row, std::size_t at) {
@@ -61,11 +65,12 @@ TEST_CASE_TEMPLATE("Table 3.1 functions and the moduli and the functions of a st
                                                 {"table_3_1_H", f.voidage_sensitivity}};
       value = by_name.at(c);
       if (c == "table_3_1_H")
-        CHECK(voidage_sensitivity(ElasticModel::mazzei_lettieri, row.in<T>(0), row.in<T>(1)) == value);
+        CHECK(voidage_sensitivity(MazzeiLettieriModulus{}, row.in<T>(0), row.in<T>(1)) == value);
     } else if (c.starts_with("modulus_")) {
-      const ElasticModel model = models.at(c.substr(std::string("modulus_").size()));
-      value = equilibrium_modulus(model, row.in<T>(0), fluid_of<T>(row, 1), Particles<T>{row.in<T>(3), row.in<T>(4)},
-                                  row.in<T>(5));
+      const EquilibriumState<T> state{row.in<T>(0), fluid_of<T>(row, 1), Particles<T>{row.in<T>(3), row.in<T>(4)},
+                                      row.in<T>(5)};
+      value = std::visit([&](const auto& model) { return model(state); },
+                         models.at(c.substr(std::string("modulus_").size())));
     } else {
       const T voidage = row.in<T>(0), slip = row.in<T>(1), diameter = row.in<T>(4);
       const Fluid<T> fluid = fluid_of<T>(row, 2);
@@ -78,7 +83,8 @@ TEST_CASE_TEMPLATE("Table 3.1 functions and the moduli and the functions of a st
         const T beta = drag::MazzeiLettieri{}(drag::DragState<T>{voidage, slip, fluid, diameter}).classical();
         CHECK(test::error_in_epsilons(both.beta, static_cast<long double>(beta)) <= tolerance);
       }
-      if (c == "mazzei_lettieri_modulus") value = mazzei_lettieri_modulus(voidage, slip, fluid, diameter);
+      if (c == "mazzei_lettieri_modulus")
+        value = MazzeiLettieriModulus{}(drag::DragState<T>{voidage, slip, fluid, diameter});
     }
     REQUIRE_MESSAGE(std::isfinite(value), "no function, or a non-finite value, for " << c);
     const long double e = test::error_in_epsilons(value, row.value);
@@ -92,23 +98,23 @@ TEST_CASE_TEMPLATE("Table 3.1 functions and the moduli and the functions of a st
 
 TEST_CASE_TEMPLATE("derivatives of the equilibrium moduli through Dual<T> match central differences", T,
                    FLUIDBED_SCALAR_TYPES) {
-  using D = Dual<T, 1>;
   const Fluid<T> air{T(1.25L), T(1.52587890625e-5L)};
   const Particles<T> particles{T(1250), T(1.220703125e-4L)};
+  const auto state_at = [&](const T& voidage) { return EquilibriumState<T>{voidage, air, particles, T(3)}; };
   for (const T voidage : {T(0.4L), T(0.6L), T(0.95L)})
-    for (const ElasticModel model :
-         {ElasticModel::foscolo_gibilaro, ElasticModel::jean_fan, ElasticModel::mazzei_lettieri}) {
-      const D e = equilibrium_modulus(model, D::variable(voidage, 0), air, particles, T(3));
-      CHECK(test::same_arithmetic(e.value, equilibrium_modulus(model, voidage, air, particles, T(3))));
-      // dE/dε against a central difference with h = ε_T^(1/3) (error ~ h² ≈ ε_T^(2/3))
-      const T h = std::cbrt(std::numeric_limits<T>::epsilon());
-      const T difference = (equilibrium_modulus(model, voidage + h, air, particles, T(3)) -
-                            equilibrium_modulus(model, voidage - h, air, particles, T(3))) /
-                           (2 * h);
-      INFO("model " << int(model) << " voidage " << double(voidage));
-      CHECK(std::isfinite(e.derivative[0]));
-      CHECK(double(e.derivative[0]) == doctest::Approx(double(difference)).epsilon(100 * double(h * h)));
-    }
+    for (const AnyElasticModulus& any : ElasticModuli::all())
+      std::visit(
+          [&](const auto& model) {
+            const auto e = model.with_derivatives(state_at(voidage));
+            CHECK(test::same_arithmetic(e.value, model(state_at(voidage))));
+            // dE/dε against a central difference with h = ε_T^(1/3) (error ~ h² ≈ ε_T^(2/3))
+            const T h = std::cbrt(std::numeric_limits<T>::epsilon());
+            const T difference = (model(state_at(voidage + h)) - model(state_at(voidage - h))) / (2 * h);
+            INFO("model " << model.name() << " voidage " << double(voidage));
+            CHECK(std::isfinite(e.d_voidage));
+            CHECK(double(e.d_voidage) == doctest::Approx(double(difference)).epsilon(100 * double(h * h)));
+          },
+          any);
 }
 
 TEST_CASE_TEMPLATE("the interaction forces and the elastic force are their documented products to 4 eps", T,
@@ -147,7 +153,7 @@ TEST_CASE_TEMPLATE("the interaction forces and the elastic force are their docum
   check(elastic_force(a, b, h, d), {along * L(a[0]), along * L(a[1]), along * L(a[2])});
   const Vector3<T> up{T(0), T(0), T(1)};
   check(elastic_force_vertical(T(3.5L), b, up), {0, 0, L(T(3.5L)) * L(b[2])});
-  CHECK_NOTHROW(elastic_force_vertical_checked(T(3.5L), b, up));
+  CHECK_NOTHROW(elastic_force_vertical(T(3.5L), b, up, fluidbed::checked));
 }
 
 TEST_CASE_TEMPLATE("stability functions and wave speeds and the minimum bubbling point agree with mpmath", T,
@@ -159,7 +165,9 @@ TEST_CASE_TEMPLATE("stability functions and wave speeds and the minimum bubbling
     INFO(c << " (d = " << double(row.p[3]) << ", voidage " << double(row.p[4]) << ")");
     const HomogeneousSuspension<T> s = suspension_of<T>(row);
     const T voidage = row.in<T>(4);
-    const auto model_of = [&](const std::string& prefix) { return models.at(c.substr(prefix.size())); };
+    const auto model_of = [&](const std::string& prefix) -> const AnyElasticModulus& {
+      return models.at(c.substr(prefix.size()));
+    };
     T value = std::numeric_limits<T>::quiet_NaN();
     if (c == "suspension_terminal_velocity") value = s.terminal_velocity;
     if (c == "suspension_terminal_reynolds") value = s.terminal_reynolds;
@@ -205,10 +213,9 @@ TEST_CASE_TEMPLATE("minimum bubbling point and the waves are finite for every mo
   const Fluid<T> air{T(1.205L), T(1.81e-5L)};
   for (const Particles<T> particles :
        {Particles<T>{T(1210), T(137e-6L)}, Particles<T>{T(1420), T(26e-6L)}, Particles<T>{T(2500), T(1e-3L)}}) {
-    const HomogeneousSuspension<T> s = homogeneous_suspension_checked(air, particles);
-    for (const ElasticModel model :
-         {ElasticModel::foscolo_gibilaro, ElasticModel::jean_fan, ElasticModel::mazzei_lettieri}) {
-      INFO("d = " << double(particles.diameter) << ", model " << int(model));
+    const HomogeneousSuspension<T> s = homogeneous_suspension(air, particles, fluidbed::checked);
+    for (const AnyElasticModulus& model : ElasticModuli::all()) {
+      INFO("d = " << double(particles.diameter) << ", model " << ElasticModuli::name_of(model));
       const StabilityTransition<T> t = minimum_bubbling_point(model, s);
       CHECK(std::isfinite(t.maximum_voidage));
       CHECK(std::isfinite(t.maximum_stability));
@@ -218,16 +225,16 @@ TEST_CASE_TEMPLATE("minimum bubbling point and the waves are finite for every mo
       const T step = std::sqrt(std::numeric_limits<T>::epsilon()) * t.maximum_voidage;
       CHECK(stability_function(model, s, t.maximum_voidage) >= stability_function(model, s, t.maximum_voidage - step));
       CHECK(stability_function(model, s, t.maximum_voidage) >= stability_function(model, s, t.maximum_voidage + step));
-      const WaveSpeeds<T> w = wave_speeds_checked(model, s, T(0.5L));
-      const Wave<T> wave = wave_of_wavenumber_checked(w, T(30));
+      const WaveSpeeds<T> w = wave_speeds(model, s, T(0.5L), fluidbed::checked);
+      const Wave<T> wave = wave_of_wavenumber(w, T(30), fluidbed::checked);
       CHECK(std::isfinite(wave.growth_rate));
       CHECK(std::isfinite(wave.velocity));
-      CHECK(double(growth_rate_of_wave_velocity_checked(w, wave.velocity)) ==
+      CHECK(double(growth_rate_of_wave_velocity(w, wave.velocity, fluidbed::checked)) ==
             doctest::Approx(double(wave.growth_rate))
                 .scale(double(w.damping))
                 .epsilon(1e3 * double(std::numeric_limits<T>::epsilon())));
-      CHECK(std::isfinite(squared_wavenumber_of_wave_velocity_checked(w, wave.velocity)));
-      CHECK(stability_function_checked(model, s, T(1)) == -std::numeric_limits<T>::infinity());  // its limit at 1
+      CHECK(std::isfinite(squared_wavenumber_of_wave_velocity(w, wave.velocity, fluidbed::checked)));
+      CHECK(stability_function(model, s, T(1), fluidbed::checked) == -std::numeric_limits<T>::infinity());  // at 1
     }
   }
 }

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "fluidbed/elastic.hpp"
 #include "reference_table.hpp"
@@ -21,9 +22,10 @@ constexpr double g = 9.81;
 
 double relative_difference(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-const std::map<std::string, ElasticModel> models = {{"foscolo_gibilaro", ElasticModel::foscolo_gibilaro},
-                                                    {"jean_fan", ElasticModel::jean_fan},
-                                                    {"mazzei_lettieri", ElasticModel::mazzei_lettieri}};
+// The models by the names of the reference tables.
+const std::map<std::string, AnyElasticModulus> models = {{"foscolo_gibilaro", FoscoloGibilaroModulus{}},
+                                                         {"jean_fan", JeanFanModulus{}},
+                                                         {"mazzei_lettieri", MazzeiLettieriModulus{}}};
 
 HomogeneousSuspension<double> suspension_of(const test::ReferenceTable& table, std::size_t row) {
   const Fluid<double> fluid{table.number(row, "fluid_density"), table.number(row, "fluid_viscosity")};
@@ -109,15 +111,15 @@ TEST_CASE("seed 000 Table 4.6: the printed minimum bubbling voidages of the thre
 TEST_CASE("seed 000 section 4.6.3 system: F-G at 0.403 and 0.566 cm/s, M-L at 0.448 and 0.900 cm/s") {
   const auto s = suspension_of_case("section_4_6_3");
   CHECK(s.terminal_velocity == doctest::Approx(0.29866).epsilon(2e-5));
-  const auto f = minimum_bubbling_point(ElasticModel::foscolo_gibilaro, s);
+  const auto f = minimum_bubbling_point(FoscoloGibilaroModulus{}, s);
   CHECK(*f.bubbling_voidage == doctest::Approx(0.4026).epsilon(2e-4));
   CHECK(*f.bubbling_velocity == doctest::Approx(0.00566).epsilon(1e-3));
-  const auto j = minimum_bubbling_point(ElasticModel::jean_fan, s);
+  const auto j = minimum_bubbling_point(JeanFanModulus{}, s);
   CHECK(*j.bubbling_velocity == doctest::Approx(0.01000).epsilon(1e-3));
   // With the factor C in H (Table 4.6 needs it) Mazzei–Lettieri gives 0.448 and 0.900 cm/s; the
   // thesis's text quotes ≈ 0.460 and 1.00 cm/s, which C = 1 would give (0.4608 and 1.02 cm/s,
   // asserted by tests/reference/stability_reference.py).
-  const auto m = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s);
+  const auto m = minimum_bubbling_point(MazzeiLettieriModulus{}, s);
   CHECK(*m.bubbling_voidage == doctest::Approx(0.4479).epsilon(2e-4));
   CHECK(*m.bubbling_velocity == doctest::Approx(0.00900).epsilon(1e-3));
   CHECK(std::abs(*m.bubbling_voidage - 0.460) > 0.01);
@@ -131,7 +133,7 @@ TEST_CASE("u_k, u_d, K (with C) and S on voidage grids agree with the mpmath ref
     const std::string name = table.text(row, "case");
     if (!suspensions.count(name)) suspensions.emplace(name, suspension_of_case(name));
     const auto& s = suspensions.at(name);
-    const ElasticModel model = models.at(table.text(row, "model"));
+    const AnyElasticModulus& model = models.at(table.text(row, "model"));
     const double voidage = table.number(row, "voidage");
     INFO(name << ", " << table.text(row, "model") << ", voidage " << voidage);
     const WaveSpeeds<double> w = wave_speeds(model, s, voidage);
@@ -157,10 +159,10 @@ TEST_CASE("damping K includes the factor C that eq. 4.26 omits") {
 
 TEST_CASE("waves: the dispersion relation reproduces eq. 4.35 and the long- and short-wave speeds") {
   const auto s = suspension_of_case("powder1_20C");
-  for (const ElasticModel model : {ElasticModel::foscolo_gibilaro, ElasticModel::mazzei_lettieri})
+  for (const AnyElasticModulus model : {AnyElasticModulus{FoscoloGibilaroModulus{}}, AnyElasticModulus{MazzeiLettieriModulus{}}})
     for (const double voidage : {0.38, 0.45, 0.7}) {
       const WaveSpeeds<double> w = wave_speeds(model, s, voidage);
-      INFO("model " << int(model) << ", voidage " << voidage);
+      INFO("model " << ElasticModuli::name_of(model) << ", voidage " << voidage);
       for (const double k : {1.0, 30.0, 1e3}) {  // m⁻¹
         const Wave<double> wave = wave_of_wavenumber(w, k);
         CHECK(std::abs(growth_rate_of_wave_velocity(w, wave.velocity) - wave.growth_rate) < 1e-9 * w.damping);
@@ -177,26 +179,26 @@ TEST_CASE("waves: the dispersion relation reproduces eq. 4.35 and the long- and 
 
 TEST_CASE("minimum bubbling point: interval bounds, the status when the search starts above the root, errors") {
   const auto s = suspension_of_case("powder1_20C");
-  const auto full = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s);
+  const auto full = minimum_bubbling_point(MazzeiLettieriModulus{}, s);
   REQUIRE(full.bubbling_voidage.has_value());
   // the packed state is inside the default interval: S < 0 at 0.30
-  CHECK(stability_function(ElasticModel::mazzei_lettieri, s, 0.30) < 0);
+  CHECK(stability_function(MazzeiLettieriModulus{}, s, 0.30) < 0);
   // starting inside the bubbling band
-  const auto above = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s, {.lower = 0.45, .upper = 1.0});
+  const auto above = minimum_bubbling_point(MazzeiLettieriModulus{}, s, {.lower = 0.45, .upper = 1.0});
   CHECK(above.status == TransitionStatus::unstable_at_lower_bound);
   CHECK_FALSE(above.bubbling_voidage.has_value());
   CHECK(above.restabilisation_voidage.has_value());
   // stopping below the re-stabilisation root: no upper root reported
-  const auto capped = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s, {.lower = 0.30, .upper = 0.99});
+  const auto capped = minimum_bubbling_point(MazzeiLettieriModulus{}, s, {.lower = 0.30, .upper = 0.99});
   CHECK(*capped.bubbling_voidage == doctest::Approx(*full.bubbling_voidage).epsilon(1e-14));
   CHECK_FALSE(capped.restabilisation_voidage.has_value());
   // a band entirely outside the interval: no transition
-  const auto dense = minimum_bubbling_point(ElasticModel::mazzei_lettieri, s, {.lower = 0.30, .upper = 0.39});
+  const auto dense = minimum_bubbling_point(MazzeiLettieriModulus{}, s, {.lower = 0.30, .upper = 0.39});
   CHECK(dense.status == TransitionStatus::no_transition);
-  CHECK_THROWS_AS(minimum_bubbling_point(ElasticModel::jean_fan, s, {.lower = 0.0, .upper = 1.0}), std::domain_error);
-  CHECK_THROWS_AS(minimum_bubbling_point(ElasticModel::jean_fan, s, {.lower = 0.5, .upper = 0.4}), std::domain_error);
-  CHECK_THROWS_AS(minimum_bubbling_point(ElasticModel::jean_fan, s, {.lower = 0.3, .upper = 1.1}), std::domain_error);
-  CHECK_THROWS_AS(homogeneous_suspension_checked(Fluid<double>{1000.0, 1e-3}, Particles<double>{900.0, 1e-4}),
+  CHECK_THROWS_AS(minimum_bubbling_point(JeanFanModulus{}, s, {.lower = 0.0, .upper = 1.0}), std::domain_error);
+  CHECK_THROWS_AS(minimum_bubbling_point(JeanFanModulus{}, s, {.lower = 0.5, .upper = 0.4}), std::domain_error);
+  CHECK_THROWS_AS(minimum_bubbling_point(JeanFanModulus{}, s, {.lower = 0.3, .upper = 1.1}), std::domain_error);
+  CHECK_THROWS_AS(homogeneous_suspension(Fluid<double>{1000.0, 1e-3}, Particles<double>{900.0, 1e-4}, fluidbed::checked),
                   std::domain_error);
 }
 
@@ -206,7 +208,7 @@ TEST_CASE("a positive band narrower than the sampling is still found, and vanish
   // narrower than the 2000 samples resolve.
   const Fluid<double> air{1.205, 1.81e-5};
   const auto peak_of = [&](double density) {
-    return minimum_bubbling_point(ElasticModel::jean_fan, homogeneous_suspension(air, Particles<double>{density, 26e-6}))
+    return minimum_bubbling_point(JeanFanModulus{}, homogeneous_suspension(air, Particles<double>{density, 26e-6}))
         .maximum_stability;
   };
   double low = 1420.0, high = 20000.0;  // peak < 0 at low, > 0 at high
@@ -216,13 +218,29 @@ TEST_CASE("a positive band narrower than the sampling is still found, and vanish
     const double middle = 0.5 * (low + high);
     (peak_of(middle) > 1e-9 ? high : low) = middle;
   }
-  const auto t = minimum_bubbling_point(ElasticModel::jean_fan, homogeneous_suspension(air, Particles<double>{high, 26e-6}));
+  const auto t = minimum_bubbling_point(JeanFanModulus{}, homogeneous_suspension(air, Particles<double>{high, 26e-6}));
   REQUIRE(t.status == TransitionStatus::transition);
   REQUIRE(t.restabilisation_voidage.has_value());
   CHECK(*t.bubbling_voidage < t.maximum_voidage);
   CHECK(*t.restabilisation_voidage > t.maximum_voidage);
   CHECK(*t.restabilisation_voidage - *t.bubbling_voidage < 1e-3);
   const auto s = homogeneous_suspension(air, Particles<double>{high, 26e-6});
-  CHECK(std::abs(stability_function(ElasticModel::jean_fan, s, *t.bubbling_voidage)) < 1e-12);
-  CHECK(std::abs(stability_function(ElasticModel::jean_fan, s, *t.restabilisation_voidage)) < 1e-12);
+  CHECK(std::abs(stability_function(JeanFanModulus{}, s, *t.bubbling_voidage)) < 1e-12);
+  CHECK(std::abs(stability_function(JeanFanModulus{}, s, *t.restabilisation_voidage)) < 1e-12);
+}
+
+TEST_CASE("the criteria take a modulus type or a run-time-selected one, and the error policy") {
+  const auto s = suspension_of_case("powder1_20C");
+  for (const AnyElasticModulus& model : ElasticModuli::all()) {
+    INFO(ElasticModuli::name_of(model));
+    std::visit(
+        [&](const auto& m) {
+          CHECK(stability_function(m, s, 0.45) == stability_function(model, s, 0.45));
+          CHECK(stability_function(m, s, 0.45, fluidbed::checked) == stability_function(m, s, 0.45));
+          CHECK(*minimum_bubbling_point(m, s).bubbling_voidage == *minimum_bubbling_point(model, s).bubbling_voidage);
+        },
+        model);
+  }
+  CHECK_THROWS_WITH_AS(stability_function(JeanFanModulus{}, s, 1.5, fluidbed::checked),
+                       doctest::Contains("fluidbed::stability_function: argument 'voidage' = 1.5"), std::domain_error);
 }

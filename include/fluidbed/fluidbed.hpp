@@ -4,5 +4,6 @@
 #include "drag.hpp"
 #include "settling.hpp"
 #include "elastic.hpp"
+#include "interaction.hpp"
 #include "kinetic_theory.hpp"
 #include "moments.hpp"

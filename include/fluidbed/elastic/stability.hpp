@@ -26,10 +26,13 @@
 // with u_t Dallavalle's terminal velocity and n_e = n_e(Re_t) (seed eq. 3.24), as seed 000
 // uses them (Table 4.6 is reproduced with exactly these).
 //
-// Preconditions (asserted in debug builds): ε ∈ (0, 1] and a suspension as homogeneous_suspension
-// builds it (ρ_f, μ_f, d, g > 0, ρ_p > ρ_f, u_t, Re_t, n_e > 0); wave numbers and velocities > 0.
-// The `_checked` forms validate them and throw std::domain_error naming the argument and its
-// value; minimum_bubbling_point always validates.
+// The criteria take the elastic modulus of the model (elastic_modulus.hpp: FoscoloGibilaroModulus,
+// JeanFanModulus, MazzeiLettieriModulus, one of your own, or an ElasticModuli::Variant).
+// Preconditions: ε ∈ (0, 1] and a suspension as homogeneous_suspension builds it (ρ_f, μ_f, d,
+// g > 0, ρ_p > ρ_f, u_t, Re_t, n_e > 0: domain(suspension)); wave numbers and velocities > 0.
+// Every function takes an error policy as last argument: fluidbed::unchecked (default; asserted
+// in debug builds) or fluidbed::checked (std::domain_error naming the argument and its value);
+// minimum_bubbling_point always validates.
 //
 // S is negative in the packed range, positive in a middle band (bubbling) and negative again
 // as ε → 1, where u_d/u_k ∝ (1 − ε)^−½: there are two roots. The lower one is the minimum
@@ -43,17 +46,20 @@
 #include <complex>
 #include <limits>
 #include <optional>
-#include <sstream>
+#include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "../core/config.hpp"
 #include "../core/dual.hpp"
-#include "../core/root_finding.hpp"
+#include "../core/domain.hpp"
 #include "../core/errors.hpp"
+#include "../core/root_finding.hpp"
 #include "../properties.hpp"
 #include "../settling/richardson_zaki.hpp"
-#include "../settling/terminal_velocity.hpp"
+#include "../single_particle/settling_system.hpp"
+#include "../single_particle/terminal_velocity_closed_forms.hpp"
 #include "elastic_modulus.hpp"
 
 namespace fluidbed::elastic {
@@ -69,91 +75,98 @@ struct HomogeneousSuspension {
   T exponent;           // n_e(Re_t), seed eq. 3.24
 };
 
-// The suspension as seed 000 §4.6 sets it up: Dallavalle u_t (eq. 3.51) and n_e(Re_t) of
-// eq. 3.24. Preconditions: positive properties, ρ_p > ρ_f (a fluidized, not a floating, bed).
+// The domain of a suspension, declared once: a settling system (single_particle::settling_domain)
+// and its single-particle data, which a hand-built suspension may get wrong.
 template <class T>
-HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Particles<T>& particles,
-                                                const T& gravity = standard_gravity_as<T>()) {
-  HomogeneousSuspension<T> s{fluid, particles, gravity, T(0), T(0), T(0)};
-  s.terminal_velocity = settling::terminal_velocity_dallavalle(fluid, particles, gravity);
-  s.terminal_reynolds = terminal_reynolds(fluid, particles.diameter, s.terminal_velocity);
-  s.exponent = settling::richardson_zaki_exponent_mazzei(s.terminal_reynolds);
-  return s;
-}
-
-// The same with every argument validated (std::domain_error naming argument and value).
-template <class T>
-HomogeneousSuspension<T> homogeneous_suspension_checked(const Fluid<T>& fluid, const Particles<T>& particles,
-                                                        const T& gravity = standard_gravity_as<T>()) {
-  settling::detail::validate_settling("homogeneous_suspension", fluid, particles, gravity);  // also ρ_p > ρ_f
-  return homogeneous_suspension(fluid, particles, gravity);
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 8> domain(const HomogeneousSuspension<T>& s) {
+  return join(single_particle::settling_domain(s.fluid, s.particles, s.gravity),
+              arguments(Argument<T>{"suspension.terminal_velocity", s.terminal_velocity, domains::positive<T>()},
+                        Argument<T>{"suspension.terminal_reynolds", s.terminal_reynolds, domains::positive<T>()},
+                        Argument<T>{"suspension.exponent", s.exponent, domains::positive<T>()}));
 }
 
 namespace detail {
 
-// A suspension's material data and its derived single-particle data (which a hand-built
-// suspension may get wrong), for the checked forms.
-template <class T>
-void validate_suspension(std::string_view function, const HomogeneousSuspension<T>& s) {
-  settling::detail::validate_settling(function, s.fluid, s.particles, s.gravity);
-  require_positive(function, "suspension.terminal_velocity", s.terminal_velocity);
-  require_positive(function, "suspension.terminal_reynolds", s.terminal_reynolds);
-  require_positive(function, "suspension.exponent", s.exponent);
-}
-
-template <class T>
-void validate_suspension_state(std::string_view function, const HomogeneousSuspension<T>& s, const T& voidage) {
-  validate_suspension(function, s);
-  require_in_half_open(function, "voidage", voidage, T(0), T(1));
+// A suspension at a voidage ε ∈ (0, 1] (the value of a dual voidage).
+template <class S, class T>
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 9> suspension_state_domain(const HomogeneousSuspension<T>& s,
+                                                                       const S& voidage) {
+  return join(domain(s), arguments(Argument<T>{"voidage", value_of(voidage), domains::half_open(T(0), T(1))}));
 }
 
 }  // namespace detail
 
-// The equilibrium modulus E^e(ε) of a model for this suspension [Pa]. S may be Dual in ε.
-template <class S, class T>
-FLUIDBED_HOST_DEVICE S equilibrium_modulus(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
-  return equilibrium_modulus(model, voidage, s.fluid, s.particles, s.terminal_reynolds, s.gravity);
+// The suspension as seed 000 §4.6 sets it up: Dallavalle u_t (eq. 3.51) and n_e(Re_t) of
+// eq. 3.24. Preconditions: positive properties, ρ_p > ρ_f (a fluidized, not a floating, bed).
+template <class T, ErrorPolicy Policy = Unchecked>
+HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Particles<T>& particles,
+                                                const T& gravity, Policy policy = {}) {
+  check_domain(policy, "homogeneous_suspension", single_particle::settling_domain(fluid, particles, gravity));
+  HomogeneousSuspension<T> s{fluid, particles, gravity, T(0), T(0), T(0)};
+  s.terminal_velocity = single_particle::DallavalleTerminalVelocity{}(fluid, particles, gravity);
+  s.terminal_reynolds = terminal_reynolds(fluid, particles.diameter, s.terminal_velocity);
+  s.exponent = settling::MazzeiExponent{}(s.terminal_reynolds);
+  return s;
+}
+
+// The same at standard gravity.
+template <class T, ErrorPolicy Policy = Unchecked>
+HomogeneousSuspension<T> homogeneous_suspension(const Fluid<T>& fluid, const Particles<T>& particles,
+                                                Policy policy = {}) {
+  return homogeneous_suspension(fluid, particles, standard_gravity_as<T>(), policy);
+}
+
+// The equilibrium modulus E^e(ε) of a model for this suspension [Pa]: `model` any elastic
+// modulus or a variant of them. S may be Dual in ε.
+template <class Model, class S, class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE S equilibrium_modulus(const Model& model, const HomogeneousSuspension<T>& s, const S& voidage,
+                                           Policy policy = {}) {
+  check_domain(policy, "equilibrium_modulus", detail::suspension_state_domain(s, voidage));
+  const EquilibriumState<T> state{value_of(voidage), s.fluid, s.particles, s.terminal_reynolds, s.gravity};
+  if constexpr (detail::is_variant<Model>)
+    return std::visit([&](const auto& m) { return m.modulus_at_equilibrium(voidage, state); }, model);
+  else
+    return model.modulus_at_equilibrium(voidage, state);
 }
 
 // u_k = u_t n_e (1 − ε) ε^(n_e − 1) = (1 − ε) du_s/dε along Richardson–Zaki (eq. 4.27) [m s⁻¹].
-template <class S, class T>
-FLUIDBED_HOST_DEVICE S kinematic_wave_speed(const HomogeneousSuspension<T>& s, const S& voidage) {
+template <class S, class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE S kinematic_wave_speed(const HomogeneousSuspension<T>& s, const S& voidage, Policy policy = {}) {
   using std::pow;
-  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.exponent > T(0));
+  check_domain(policy, "kinematic_wave_speed", detail::suspension_state_domain(s, voidage));
   return s.terminal_velocity * s.exponent * (1 - voidage) * pow(voidage, s.exponent - T(1));
 }
 
 // u_d = √(E^e/ρ_p) (eq. 4.31) [m s⁻¹].
-template <class S, class T>
-FLUIDBED_HOST_DEVICE S dynamic_wave_speed(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+template <class Model, class S, class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE S dynamic_wave_speed(const Model& model, const HomogeneousSuspension<T>& s, const S& voidage,
+                                          Policy policy = {}) {
   using std::sqrt;
+  check_domain(policy, "dynamic_wave_speed", detail::suspension_state_domain(s, voidage));
   return sqrt(equilibrium_modulus(model, s, voidage) / s.particles.density);
 }
 
 // K = (ρ_p − ρ_f) g C (2 − D)/(ρ_p u_s), u_s = u_t ε^n_e [s⁻¹]: the relaxation rate of the
 // particle velocity under the Mazzei–Lettieri drag (eq. 4.31 with the C that eq. 4.26 omits).
-template <class S, class T>
-FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voidage) {
+template <class S, class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE S damping(const HomogeneousSuspension<T>& s, const S& voidage, Policy policy = {}) {
   using std::pow;
-  FLUIDBED_EXPECTS(voidage > 0 && voidage <= 1 && s.terminal_velocity > T(0) && s.particles.density > T(0));
+  check_domain(policy, "damping", detail::suspension_state_domain(s, voidage));
   const auto f = mazzei_lettieri_functions(voidage, S(s.terminal_reynolds));
   const S superficial = s.terminal_velocity * pow(voidage, s.exponent);
   return (s.particles.density - s.fluid.density) * s.gravity * f.reynolds_factor * (2 - f.drag_factor) /
          (s.particles.density * superficial);
 }
 
-// S = 1 − u_d/u_k: S_f, S_j or S_r (eqs. 3.76, 4.37, 4.36); the state is stable while S < 0.
-// −∞ at ε = 1, the limit: both speeds vanish there, u_d/u_k ∝ (1 − ε)^−½.
-template <class S, class T>
-FLUIDBED_HOST_DEVICE S stability_function(ElasticModel model, const HomogeneousSuspension<T>& s, const S& voidage) {
+// S = 1 − u_d/u_k: S_f, S_j or S_r (eqs. 3.76, 4.37, 4.36) as `model` is FoscoloGibilaroModulus,
+// JeanFanModulus or MazzeiLettieriModulus; the state is stable while S < 0. −∞ at ε = 1, the
+// limit: both speeds vanish there, u_d/u_k ∝ (1 − ε)^−½.
+template <class Model, class S, class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE S stability_function(const Model& model, const HomogeneousSuspension<T>& s, const S& voidage,
+                                          Policy policy = {}) {
+  check_domain(policy, "stability_function", detail::suspension_state_domain(s, voidage));
   if (voidage == 1) return S(-std::numeric_limits<T>::infinity());
   return 1 - dynamic_wave_speed(model, s, voidage) / kinematic_wave_speed(s, voidage);
-}
-
-template <class T>
-T stability_function_checked(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
-  detail::validate_suspension_state("stability_function", s, voidage);
-  return stability_function(model, s, voidage);
 }
 
 // ---------------------------------------------------------------- waves (eqs. 4.34–4.35)
@@ -165,25 +178,22 @@ struct WaveSpeeds {
   T damping;    // K [s⁻¹]
 };
 
-template <class T>
-WaveSpeeds<T> wave_speeds(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+template <class Model, class T, ErrorPolicy Policy = Unchecked>
+WaveSpeeds<T> wave_speeds(const Model& model, const HomogeneousSuspension<T>& s, const T& voidage, Policy policy = {}) {
+  check_domain(policy, "wave_speeds", detail::suspension_state_domain(s, voidage));
   return {kinematic_wave_speed(s, voidage), dynamic_wave_speed(model, s, voidage), damping(s, voidage)};
-}
-
-// The checked form of u_k, u_d and K.
-template <class T>
-WaveSpeeds<T> wave_speeds_checked(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
-  detail::validate_suspension_state("wave_speeds", s, voidage);
-  return wave_speeds(model, s, voidage);
 }
 
 namespace detail {
 
+// The domain of the wave quantities with a wavenumber or a wave velocity (`name`) > 0.
 template <class T>
-void validate_wave_speeds(std::string_view function, const WaveSpeeds<T>& w) {
-  require_non_negative(function, "waves.kinematic", w.kinematic);
-  require_non_negative(function, "waves.dynamic", w.dynamic);
-  require_non_negative(function, "waves.damping", w.damping);
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 4> wave_domain(const WaveSpeeds<T>& w, std::string_view name,
+                                                           const T& value) {
+  return arguments(Argument<T>{"waves.kinematic", w.kinematic, domains::non_negative<T>()},
+                   Argument<T>{"waves.dynamic", w.dynamic, domains::non_negative<T>()},
+                   Argument<T>{"waves.damping", w.damping, domains::non_negative<T>()},
+                   Argument<T>{name, value, domains::positive<T>()});
 }
 
 }  // namespace detail
@@ -199,9 +209,9 @@ struct Wave {
 // σ² + K σ + u_d² k² + i K u_k k = 0; the root with the larger real part (the least damped)
 // is σ = [−K + √(K² − 4 u_d² k² − 4 i K u_k k)]/2, so a = Re σ and ν = −Im σ/k. Long waves
 // travel at u_k, short ones at u_d; every k decays iff u_d > u_k.
-template <class T>
-Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber) {
-  FLUIDBED_EXPECTS(wavenumber > T(0) && w.kinematic >= T(0) && w.dynamic >= T(0) && w.damping >= T(0));
+template <class T, ErrorPolicy Policy = Unchecked>
+Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber, Policy policy = {}) {
+  check_domain(policy, "wave_of_wavenumber", detail::wave_domain(w, "wavenumber", wavenumber));
   const std::complex<T> discriminant(w.damping * w.damping - T(4) * w.dynamic * w.dynamic * wavenumber * wavenumber,
                                      -T(4) * w.damping * w.kinematic * wavenumber);
   const std::complex<T> sigma = (-w.damping + std::sqrt(discriminant)) / T(2);
@@ -209,40 +219,19 @@ Wave<T> wave_of_wavenumber(const WaveSpeeds<T>& w, const T& wavenumber) {
 }
 
 // Eq. 4.35, a wave of velocity ν: a = K (u_k − ν)/(2ν).
-template <class T>
-T growth_rate_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
-  FLUIDBED_EXPECTS(velocity > T(0));
+template <class T, ErrorPolicy Policy = Unchecked>
+T growth_rate_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity, Policy policy = {}) {
+  check_domain(policy, "growth_rate_of_wave_velocity", detail::wave_domain(w, "velocity", velocity));
   return w.damping * (w.kinematic - velocity) / (T(2) * velocity);
 }
 
 // Eq. 4.35, a wave of velocity ν: k² = [K²/(4ν²)] (u_k² − ν²)/(ν² − u_d²). Negative where no
 // wave of that velocity exists (ν outside the interval between u_d and u_k).
-template <class T>
-T squared_wavenumber_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity) {
-  FLUIDBED_EXPECTS(velocity > T(0));
+template <class T, ErrorPolicy Policy = Unchecked>
+T squared_wavenumber_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity, Policy policy = {}) {
+  check_domain(policy, "squared_wavenumber_of_wave_velocity", detail::wave_domain(w, "velocity", velocity));
   const T v2 = velocity * velocity;
   return w.damping * w.damping / (T(4) * v2) * (w.kinematic * w.kinematic - v2) / (v2 - w.dynamic * w.dynamic);
-}
-
-template <class T>
-Wave<T> wave_of_wavenumber_checked(const WaveSpeeds<T>& w, const T& wavenumber) {
-  detail::validate_wave_speeds("wave_of_wavenumber", w);
-  require_positive("wave_of_wavenumber", "wavenumber", wavenumber);
-  return wave_of_wavenumber(w, wavenumber);
-}
-
-template <class T>
-T growth_rate_of_wave_velocity_checked(const WaveSpeeds<T>& w, const T& velocity) {
-  detail::validate_wave_speeds("growth_rate_of_wave_velocity", w);
-  require_positive("growth_rate_of_wave_velocity", "velocity", velocity);
-  return growth_rate_of_wave_velocity(w, velocity);
-}
-
-template <class T>
-T squared_wavenumber_of_wave_velocity_checked(const WaveSpeeds<T>& w, const T& velocity) {
-  detail::validate_wave_speeds("squared_wavenumber_of_wave_velocity", w);
-  require_positive("squared_wavenumber_of_wave_velocity", "velocity", velocity);
-  return squared_wavenumber_of_wave_velocity(w, velocity);
 }
 
 // ---------------------------------------------------------------- minimum bubbling point
@@ -299,8 +288,8 @@ T largest_searched_voidage() {
 }
 
 // dS/dε, exact (one dual-number evaluation of S).
-template <class T>
-T stability_slope(ElasticModel model, const HomogeneousSuspension<T>& s, const T& voidage) {
+template <class Model, class T>
+T stability_slope(const Model& model, const HomogeneousSuspension<T>& s, const T& voidage) {
   return stability_function(model, s, Dual<T, 1>::variable(voidage, 0)).derivative[0];
 }
 
@@ -316,14 +305,14 @@ T stability_slope(ElasticModel model, const HomogeneousSuspension<T>& s, const T
 // TOMS 748 to the precision of T. Every iteration is bounded (fluidbed::detail::root_iteration_limit).
 // Works in float, double and long double, up to detail::largest_searched_voidage<T>().
 // Throws std::domain_error unless 0 < lower < upper <= 1 and the suspension is valid
-// (detail::validate_suspension), and if S is not finite at a sample (a suspension whose
-// wave speeds leave the range of T).
-template <class T>
-StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const HomogeneousSuspension<T>& s,
+// (domain(suspension)), and if S is not finite at a sample (a suspension whose wave speeds
+// leave the range of T). `model` any elastic modulus (for a variant of them, see below).
+template <class Model, class T>
+StabilityTransition<T> minimum_bubbling_point(const Model& model, const HomogeneousSuspension<T>& s,
                                               const VoidageInterval<T>& interval = {}) {
   using std::pow;
   constexpr std::string_view function = "minimum_bubbling_point";
-  detail::validate_suspension(function, s);
+  require_within(function, domain(s));
   require_in_open(function, "interval.lower", interval.lower, T(0), T(1));
   require_in_half_open(function, "interval.upper", interval.upper, interval.lower, T(1));
   const T stability_limit = std::min(interval.upper, detail::largest_searched_voidage<T>());
@@ -336,12 +325,8 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
     voidage[i] = i + 1 == samples ? stability_limit
                                   : detail::voidage_of_log_gap(u_low + (u_high - u_low) * T(i) / T(samples - 1));
     value[i] = stability(voidage[i]);
-    require_finite_result(function, "stability function", value[i], [&] {
-      std::ostringstream text;
-      text.precision(17);
-      text << "the suspension at voidage " << voidage[i];
-      return text.str();
-    });
+    require_finite_result(function, "stability function", value[i],
+                          [&] { return "the suspension at voidage " + fluidbed::detail::number_text(voidage[i]); });
   }
   const int peak = int(std::max_element(value.begin(), value.end()) - value.begin());
   StabilityTransition<T> out;
@@ -380,6 +365,13 @@ StabilityTransition<T> minimum_bubbling_point(ElasticModel model, const Homogene
         positive_sample ? root(voidage[j - 1], voidage[j]) : root(out.maximum_voidage, voidage[below_peak + 1]);
   }
   return out;
+}
+
+// The same for a model chosen at run time (an ElasticModuli::Variant), visited once.
+template <class... Models, class T>
+StabilityTransition<T> minimum_bubbling_point(const std::variant<Models...>& model, const HomogeneousSuspension<T>& s,
+                                              const VoidageInterval<T>& interval = {}) {
+  return std::visit([&](const auto& m) { return minimum_bubbling_point(m, s, interval); }, model);
 }
 
 }  // namespace fluidbed::elastic
