@@ -55,7 +55,9 @@
 #include <vector>
 
 #include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/fluidization.hpp"
 #include "fluidbed/settling.hpp"
+#include "fluidbed/single_particle.hpp"
 #include "plot.hpp"
 
 namespace {
@@ -215,7 +217,7 @@ void add_law(plot::Panel& panel, const AnyDragLaw& law, int index, const System&
   const plot::Look look = plot::look(index);
   const std::string inside_style = switched ? "lines lw 7 lc rgb '#d0d0d0'" : look.line(2.5);
   const std::string outside_style = switched ? "lines lw 3 dt (2,3) lc rgb '#d0d0d0'" : look.line(1.2, "(2,3)");
-  std::optional<double> equilibrium = settling::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
+  std::optional<double> equilibrium = fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
   std::string title = (name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis1949)" : name) + "   [" + validity_text(v) + "]";
   char text[64];
   if (!equilibrium)
@@ -316,7 +318,7 @@ int main(int argc, char** argv) {
   for (const System& s : systems) {
     const double re = reynolds_of(s);
     const std::optional<double> rz =
-        settling::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles);
+        fluidization::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles);
     std::printf("%s (Re = %.4g); Richardson-Zaki eps = %.4f\n", s.short_name, re, rz ? *rz : -1.0);
     std::printf("  %-26s %-9s", "law", "native");
     for (double e : table_voidages) std::printf("  F(%.2f) ", e);
@@ -327,7 +329,7 @@ int main(int argc, char** argv) {
           std::visit([](const auto& l) { return l.native_buoyancy == drag::Buoyancy::classical; }, law);
       std::printf("  %-26s %-9s", name.c_str(), classical ? "classical" : "press.gr.");
       for (double e : table_voidages) std::printf(" %9.4g", dimensionless_force(law, s, e));
-      const std::optional<double> eq = settling::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
+      const std::optional<double> eq = fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
       if (eq)
         std::printf("   %.4f\n", *eq);
       else
@@ -401,8 +403,8 @@ int main(int argc, char** argv) {
   {
     const Fluid<double> air{1.18, 1.81e-5};
     const Particles<double> fcc{1210.0, 137e-6};
-    const double u_mf = settling::minimum_fluidization_velocity_ergun(air, fcc, 0.4);
-    const std::optional<double> eq = settling::equilibrium_voidage(drag::Ergun{}, 8.73e-3, air, fcc);
+    const double u_mf = fluidization::ErgunMinimumFluidization{0.4}(air, fcc);
+    const std::optional<double> eq = fluidization::equilibrium_voidage(drag::Ergun{}, 8.73e-3, air, fcc);
     const bool ok = std::abs(u_mf - 8.73e-3) <= 0.005e-3 && eq && std::abs(*eq - 0.4) <= 5e-4;
     failures += !ok;
     std::printf(
@@ -418,7 +420,7 @@ int main(int argc, char** argv) {
                     s.name, reynolds_of(s));
       const std::string png = plot::render(
           *directory, s.file,
-          panels_of(s, settling::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles)),
+          panels_of(s, fluidization::richardson_zaki_equilibrium_voidage(s.superficial_velocity, s.fluid, s.particles)),
           {title, 0, 640, 860});
       if (!png.empty()) std::printf("plotted %s\n", png.c_str());
     }

@@ -42,7 +42,7 @@
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
 #include "fluidbed/elastic/elastic_modulus.hpp"
-#include "fluidbed/settling/bed_expansion.hpp"
+#include "fluidbed/fluidization/bed_expansion.hpp"
 #include "plot.hpp"
 
 namespace {
@@ -160,7 +160,7 @@ std::string plot_equivalent_exponents(const std::string& directory) {
     for (double r : re) ml.point(r, psi_e(v.voidage, r));
     plot::Series& er = panel.add("Ergun: the ψ that makes (3.65) equal (3.32)", plot::look(1), markers_every, 8);
     for (double r : re)
-      er.point(r, fluidbed::settling::equivalent_exponent(fluidbed::drag::Ergun{}, v.voidage, r));
+      er.point(r, fluidbed::fluidization::equivalent_exponent(fluidbed::drag::Ergun{}, v.voidage, r));
     plot::Series& df = panel.add("Di Felice α_d(Re) = χ − 1 (3.48)", plot::look(2), markers_every, 16);
     for (double r : re) df.point(r, alpha_d(r));
     panel.add("Wen & Yu α = 2.70", "lines lw 2 dt (2,2) lc 'black'").point(1e-3, 2.7).point(1e5, 2.7);

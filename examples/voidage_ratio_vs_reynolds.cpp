@@ -8,7 +8,7 @@
 // closure's drag carries the buoyant weight at the same u_s (eq. 3.28), divided by ε_R&Z,
 // against Re = ρ_f u_s d/μ_f (eq. 3.33 at equilibrium), "parametric in ε_R&Z". The pair
 // (Re, ε_R&Z) fixes Ar, so the curves hold for any particle/fluid system
-// (fluidbed::settling::voidage_ratio).
+// (fluidbed::fluidization::voidage_ratio).
 //
 // Parameter values. The figures themselves are missing from the seed (captions only), so their
 // ε_R&Z family and Re range are unknown; the thesis names ε = 0.40 and 0.80. Here ε_R&Z = 0.35,
@@ -44,12 +44,13 @@
 #include "fluidbed/drag/di_felice.hpp"
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
+#include "fluidbed/fluidization.hpp"
 #include "fluidbed/settling.hpp"
+#include "fluidbed/single_particle.hpp"
 #include "plot.hpp"
 
 namespace {
 
-using fluidbed::settling::voidage_ratio;
 
 constexpr double voidages[] = {0.35, 0.40, 0.50, 0.60, 0.70, 0.80, 0.90};
 constexpr int voidage_count = int(std::size(voidages));
@@ -66,7 +67,7 @@ template <class Law>
 Curves curves_of(const Law& law) {
   Curves c(voidage_count, std::vector<std::optional<double>>(re_points));
   for (int e = 0; e < voidage_count; ++e)
-    for (int i = 0; i < re_points; ++i) c[e][i] = voidage_ratio(law, reynolds_at(i), voidages[e]);
+    for (int i = 0; i < re_points; ++i) c[e][i] = fluidbed::fluidization::voidage_ratio(law, reynolds_at(i), voidages[e]);
   return c;
 }
 
@@ -150,7 +151,7 @@ int main(int argc, char** argv) {
   const Curves wen_yu = curves_of(fluidbed::drag::ConstantExponentDrag::wen_yu_1966());
   const Curves lewis = curves_of(fluidbed::drag::ConstantExponentDrag::lewis_1949());
   const Curves kmiec = curves_of(fluidbed::drag::ConstantExponentDrag::kmiec_1982());
-  const Curves di_felice = curves_of(fluidbed::drag::DiFelice<fluidbed::drag::SchillerNaumannCoefficient>{});
+  const Curves di_felice = curves_of(fluidbed::drag::DiFelice<fluidbed::single_particle::SchillerNaumannCoefficient>{});
   const Curves mazzei_lettieri = curves_of(fluidbed::drag::MazzeiLettieri{});
 
   const double table_re[] = {1e-3, 1e-1, 1, 10, 100, 1e3, 1e4, 1e5};

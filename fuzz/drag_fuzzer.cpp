@@ -16,7 +16,7 @@
 //                     the Sauter diameter), and on a garbage mixture (checked);
 //   free functions    the single-particle C_D·Re, the dimensionless forces and the other static
 //                     helpers of the laws, with the bounds their comments state;
-//   calibration       SyamlalOBrien::from_minimum_fluidization (throws or reproduces u_mf);
+//   calibration       fluidization::syamlal_obrien_from_minimum_fluidization (throws or reproduces u_mf);
 //   lookup            make_drag_law / find_drag_law on arbitrary names.
 #include <algorithm>
 #include <array>
@@ -31,6 +31,7 @@
 #include <variant>
 
 #include "fluidbed/drag.hpp"
+#include "fluidbed/fluidization/syamlal_obrien_calibration.hpp"
 #include "fuzz_input.hpp"
 
 using namespace fluidbed;
@@ -360,12 +361,12 @@ void free_functions(Input& in) {
   const T voidage = T(1) - phi;
   const T eps = std::numeric_limits<T>::epsilon();
   // C_D·Re of a sphere: finite and positive, C_D too for Re > 0.
-  for (const T cd_re : {StokesCoefficient::cd_times_re(re), SchillerNaumannCoefficient::cd_times_re(re),
-                        DallavalleCoefficient::cd_times_re(re)})
+  for (const T cd_re : {single_particle::StokesCoefficient::cd_times_re(re), single_particle::SchillerNaumannCoefficient::cd_times_re(re),
+                        single_particle::DallavalleCoefficient::cd_times_re(re)})
     FUZZ_CHECK(is_finite(cd_re) && cd_re > T(0), "C_D Re(%.17g) = %.17g", double(re), double(cd_re));
   if (re > T(0))
-    for (const T cd : {drag_coefficient<StokesCoefficient>(re), drag_coefficient<SchillerNaumannCoefficient>(re),
-                       drag_coefficient<DallavalleCoefficient>(re)})
+    for (const T cd : {single_particle::StokesCoefficient{}.drag_coefficient(re), single_particle::SchillerNaumannCoefficient{}.drag_coefficient(re),
+                       single_particle::DallavalleCoefficient{}.drag_coefficient(re)})
       FUZZ_CHECK(is_finite(cd) && cd > T(0), "C_D(%.17g) = %.17g", double(re), double(cd));
   // Dimensionless forces: finite and positive; Beetstra's inertial part is >= 0 (F >= F0), Tang's
   // extension keeps F positive (tang.hpp).
@@ -425,7 +426,7 @@ void free_functions(Input& in) {
 
 // ---------------------------------------------------------------------------------- calibration
 
-// SyamlalOBrien::from_minimum_fluidization: std::domain_error for invalid input, B <= 0 or
+// fluidization::syamlal_obrien_from_minimum_fluidization: std::domain_error for invalid input, B <= 0 or
 // parameters beyond the range; otherwise finite parameters with which the law reproduces u_mf
 // at ε_mf: in the −φ∇p convention β w = φ ε (ρ_p − ρ_f) g, w = u_mf/ε_mf (syamlal_obrien.hpp).
 void calibration(Input& in) {
@@ -442,7 +443,7 @@ void calibration(Input& in) {
     if (which & 16) gravity = in.garbage<double>();
   }
   try {
-    const SyamlalOBrien law = SyamlalOBrien::from_minimum_fluidization(velocity, voidage, fluid, particles, gravity);
+    const SyamlalOBrien law = fluidization::syamlal_obrien_from_minimum_fluidization(velocity, voidage, fluid, particles, gravity);
     FUZZ_CHECK(is_finite(law.c1()) && law.c1() > 0 && is_finite(law.d1()),
                "from_minimum_fluidization(u %.17g, voidage %.17g, fluid {%.17g, %.17g}, particles {%.17g, %.17g}, "
                "g %.17g) returned c1 = %.17g, d1 = %.17g",

@@ -41,7 +41,7 @@ import re
 import sys
 from pathlib import Path
 
-FAMILIES = ("drag", "settling", "elastic", "interaction", "kinetic_theory", "moments")
+FAMILIES = ("single_particle", "settling", "drag", "fluidization", "elastic", "interaction", "kinetic_theory", "moments")
 
 # ----------------------------------------------------------------------------- C++ scanning
 

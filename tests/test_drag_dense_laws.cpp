@@ -20,6 +20,7 @@
 #include "fluidbed/drag/beetstra_polydisperse.hpp"
 #include "fluidbed/drag/koch_hill.hpp"
 #include "fluidbed/drag/syamlal_obrien.hpp"
+#include "fluidbed/fluidization/syamlal_obrien_calibration.hpp"
 #include "fluidbed/drag/tang.hpp"
 #include "fluidbed/drag/tenneti.hpp"
 #include "reference_table.hpp"
@@ -376,19 +377,19 @@ TEST_CASE("SyamlalOBrien: calibration from minimum fluidization recovers the law
     const auto [lo, hi] = boost::math::tools::toms748_solve(residual, 1e-8, 1e3,
                                                             boost::math::tools::eps_tolerance<double>(52), iterations);
     const double u_mf = eps_mf * 0.5 * (lo + hi);
-    const auto calibrated = SyamlalOBrien::from_minimum_fluidization(u_mf, eps_mf, fluid, particles, g);
+    const auto calibrated = fluidization::syamlal_obrien_from_minimum_fluidization(u_mf, eps_mf, fluid, particles, g);
     INFO("eps_mf=" << eps_mf << " u_mf=" << u_mf);
     CHECK(calibrated.c1() == doctest::Approx(truth.c1()).epsilon(1e-9));
     CHECK(calibrated.d1() == doctest::Approx(truth.d1()).epsilon(1e-9));
   }
   // The defaults' d1 is what continuity gives for c1 = 0.8: 1.28 + ln 0.8/ln 0.85 = 2.653.
   CHECK(1.28 + std::log(0.8) / std::log(0.85) == doctest::Approx(2.653).epsilon(1e-3));
-  CHECK_THROWS_WITH_AS(SyamlalOBrien::from_minimum_fluidization(1e-6, 0.42, fluid, particles, g),
+  CHECK_THROWS_WITH_AS(fluidization::syamlal_obrien_from_minimum_fluidization(1e-6, 0.42, fluid, particles, g),
                        doctest::Contains("'minimum_fluidization_velocity'"), std::domain_error);
-  CHECK_THROWS_WITH_AS(SyamlalOBrien::from_minimum_fluidization(0.2, 1.0, fluid, particles, g),
+  CHECK_THROWS_WITH_AS(fluidization::syamlal_obrien_from_minimum_fluidization(0.2, 1.0, fluid, particles, g),
                        doctest::Contains("'minimum_fluidization_voidage' = 1"), std::domain_error);
   CHECK_THROWS_WITH_AS(
-      SyamlalOBrien::from_minimum_fluidization(0.2, 0.42, fluid, {.density = 1.0, .diameter = 5e-4}, g),
+      fluidization::syamlal_obrien_from_minimum_fluidization(0.2, 0.42, fluid, {.density = 1.0, .diameter = 5e-4}, g),
       doctest::Contains("'particles.density' = 1"), std::domain_error);
 }
 

@@ -164,26 +164,26 @@ TEST_CASE("single-particle C_D·Re agrees with the mpmath reference and the seed
     const double expected = table.number(row, "cd_times_re");
     INFO(name << " Re=" << re);
     if (name == "Stokes")
-      CHECK(StokesCoefficient::cd_times_re(re) == expected);
+      CHECK(single_particle::StokesCoefficient::cd_times_re(re) == expected);
     else if (name == "SchillerNaumann")
-      CHECK(SchillerNaumannCoefficient::cd_times_re(re) == doctest::Approx(expected).epsilon(1e-14));
+      CHECK(single_particle::SchillerNaumannCoefficient::cd_times_re(re) == doctest::Approx(expected).epsilon(1e-14));
     else if (name == "Dallavalle")
-      CHECK(DallavalleCoefficient::cd_times_re(re) == doctest::Approx(expected).epsilon(1e-14));
+      CHECK(single_particle::DallavalleCoefficient::cd_times_re(re) == doctest::Approx(expected).epsilon(1e-14));
     else
       FAIL("unknown coefficient " << name);
   }
   // An independent double-precision evaluation of seed 000 eqs. 3.35 and 3.55 made when the
   // thesis was read: C_D(1) = 27.6, C_D(10) = 4.151066, C_D(100) = 1.091731, the 0.4 % jump at
   // Re = 1000; Dallavalle C_D(10) = 4.6134455.
-  CHECK(drag_coefficient<SchillerNaumannCoefficient>(1.0) == doctest::Approx(27.6).epsilon(1e-12));
-  CHECK(drag_coefficient<SchillerNaumannCoefficient>(10.0) == doctest::Approx(4.151066).epsilon(1e-6));
-  CHECK(drag_coefficient<SchillerNaumannCoefficient>(100.0) == doctest::Approx(1.091731).epsilon(1e-6));
-  CHECK(drag_coefficient<SchillerNaumannCoefficient>(std::nextafter(1000.0, 0.0)) ==
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(1.0) == doctest::Approx(27.6).epsilon(1e-12));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(10.0) == doctest::Approx(4.151066).epsilon(1e-6));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(100.0) == doctest::Approx(1.091731).epsilon(1e-6));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(std::nextafter(1000.0, 0.0)) ==
         doctest::Approx(0.438288).epsilon(1e-6));
-  CHECK(drag_coefficient<SchillerNaumannCoefficient>(1000.0) == 0.44);
-  CHECK(drag_coefficient<DallavalleCoefficient>(10.0) == doctest::Approx(4.6134455).epsilon(1e-7));
-  CHECK(DallavalleCoefficient::cd_times_re(0.0) == doctest::Approx(23.04));
-  CHECK(drag_coefficient<DallavalleCoefficient>(1e16) == doctest::Approx(0.3969).epsilon(1e-6));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(1000.0) == 0.44);
+  CHECK(single_particle::DallavalleCoefficient{}.drag_coefficient(10.0) == doctest::Approx(4.6134455).epsilon(1e-7));
+  CHECK(single_particle::DallavalleCoefficient::cd_times_re(0.0) == doctest::Approx(23.04));
+  CHECK(single_particle::DallavalleCoefficient{}.drag_coefficient(1e16) == doctest::Approx(0.3969).epsilon(1e-6));
 }
 
 TEST_CASE("names: unique, found by run-time lookup, unknown names rejected with the list") {

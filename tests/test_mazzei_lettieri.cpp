@@ -109,8 +109,8 @@ TEST_CASE("Re* over every finite state: the Newton (n → 2.4) and Stokes (n →
   // Where 0.175 Re*^¾ ≫ 1, eq. 3.24 gives n = 2.4 to rounding, so ln Re* = ln Re − 2.4 ln ε; where
   // it is ≪ 1, n = 4.8 and ln Re* = ln Re − 4.8 ln ε. The Halley step of the solver once formed
   // (0.175 Re*^¾)⁴, which overflowed (and gave NaN) beyond ln Re* ≈ 239 in double, 32 in float.
-  using settling::detail::solve_terminal_reynolds;
-  const auto log_re_star = [](auto re, auto eps) { return solve_terminal_reynolds(re, eps).log_terminal_reynolds; };
+  using settling::solve_richardson_zaki_terminal_reynolds;
+  const auto log_re_star = [](auto re, auto eps) { return solve_richardson_zaki_terminal_reynolds(re, eps).log_terminal_reynolds; };
   struct Case {
     double re, eps, n;
   };
@@ -124,10 +124,10 @@ TEST_CASE("Re* over every finite state: the Newton (n → 2.4) and Stokes (n →
   CHECK(settling::richardson_zaki_terminal_reynolds(1e300, 0.01) == doctest::Approx(1e300 * std::pow(0.01, -2.4)));
   CHECK(settling::richardson_zaki_terminal_reynolds(1e300, 1e-100) == std::numeric_limits<double>::infinity());
   CHECK_THROWS_WITH_AS(
-      settling::richardson_zaki_terminal_reynolds_checked(1e300, 1e-100),
+      settling::richardson_zaki_terminal_reynolds(1e300, 1e-100, fluidbed::checked),
       doctest::Contains("result 'terminal_reynolds' = inf is not finite for reynolds = 1.0000000000000001e+300"),
       std::domain_error);
-  CHECK(settling::richardson_zaki_terminal_reynolds_checked(1e300, 0.01) ==
+  CHECK(settling::richardson_zaki_terminal_reynolds(1e300, 0.01, fluidbed::checked) ==
         settling::richardson_zaki_terminal_reynolds(1e300, 0.01));
   CHECK(log_re_star(1e30f, 0.5f) == doctest::Approx(std::log(1e30) - 2.4 * std::log(0.5)).epsilon(1e-6));
   CHECK(settling::richardson_zaki_terminal_reynolds(1e30f, 0.5f) ==
@@ -142,7 +142,7 @@ TEST_CASE("Re* where n(Re*) is a step of height 2.4 |ln ε| (ε ≪ 1): the root
                             std::pair{6.3912104805310214e-91, 6.3937804997894256e-37},
                             std::pair{2.9973843420186996e-133, 1.834351405783779e-54}}) {
     const double re = state.first, eps = state.second;  // named copies: clang < 16 captures no structured binding
-    const auto r = settling::detail::solve_terminal_reynolds(re, eps);
+    const auto r = settling::solve_richardson_zaki_terminal_reynolds(re, eps);
     const double x = r.log_terminal_reynolds, log_eps = std::log(eps);
     const double n = 2.4 + 2.4 / (1 + 0.175 * std::exp(0.75 * x));  // seed 000 eq. 3.24
     INFO("Re=" << re << " eps=" << eps << " ln Re*=" << x);

@@ -90,9 +90,9 @@ TEST_CASE_TEMPLATE("the single-sphere C_D Re of Stokes and Schiller-Naumann and 
     REQUIRE(rows.size() == 6);
     for (const test::ScalarTypeRow& row : rows) {
       const T re = row.in<T>(0);
-      const T cd_re = name == "Stokes"            ? StokesCoefficient::cd_times_re(re)
-                      : name == "SchillerNaumann" ? SchillerNaumannCoefficient::cd_times_re(re)
-                                                  : DallavalleCoefficient::cd_times_re(re);
+      const T cd_re = name == "Stokes"            ? single_particle::StokesCoefficient::cd_times_re(re)
+                      : name == "SchillerNaumann" ? single_particle::SchillerNaumannCoefficient::cd_times_re(re)
+                                                  : single_particle::DallavalleCoefficient::cd_times_re(re);
       INFO(name << " Re " << double(re));
       const long double e = test::error_in_epsilons(cd_re, row.value);
       CHECK(e <= tolerance);
@@ -155,5 +155,5 @@ TEST_CASE_TEMPLATE("switch points of the drag laws lie at the decimal in the arg
   CHECK(jump(ratio(syamlal_switch), ratio(std::nextafter(syamlal_switch, T(0)))) < 1e-5);
   CHECK(jump(ratio(syamlal_switch), ratio(std::nextafter(syamlal_switch, T(1)))) > 2e-4);
   // Schiller–Naumann: the 0.44 branch from Re = 1000 on
-  CHECK(SchillerNaumannCoefficient::cd_times_re(T(1000)) == T(0.44L) * T(1000));
+  CHECK(single_particle::SchillerNaumannCoefficient::cd_times_re(T(1000)) == T(0.44L) * T(1000));
 }

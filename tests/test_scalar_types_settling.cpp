@@ -14,7 +14,9 @@
 #include <string>
 
 #include "fluidbed/drag/any_drag_law.hpp"
+#include "fluidbed/fluidization.hpp"
 #include "fluidbed/settling.hpp"
+#include "fluidbed/single_particle.hpp"
 #include "test_scalar_types.hpp"
 
 using namespace fluidbed;
@@ -51,58 +53,58 @@ template <class T>
 std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_quantities() {
   using Row = test::ScalarTypeRow;
   std::map<std::string, std::function<T(const Row&)>> q{
-      {"rz_exponent_mazzei", [](const Row& r) { return richardson_zaki_exponent_mazzei(r.in<T>(0)); }},
+      {"rz_exponent_mazzei", [](const Row& r) { return settling::MazzeiExponent{}(r.in<T>(0)); }},
       {"rz_exponent_mazzei_derivative",
-       [](const Row& r) { return richardson_zaki_exponent_mazzei_derivative(r.in<T>(0)); }},
-      {"rz_exponent_rowe1987", [](const Row& r) { return richardson_zaki_exponent_rowe(r.in<T>(0)); }},
+       [](const Row& r) { return settling::MazzeiExponent{}.with_derivatives(r.in<T>(0)).d_argument; }},
+      {"rz_exponent_rowe1987", [](const Row& r) { return settling::RoweExponent{}(r.in<T>(0)); }},
       {"rz_exponent_garside_aldibouni1977",
-       [](const Row& r) { return richardson_zaki_exponent_garside_al_dibouni(r.in<T>(0)); }},
+       [](const Row& r) { return settling::GarsideAlDibouniExponent{}(r.in<T>(0)); }},
       {"rz_exponent_khan_richardson1989",
-       [](const Row& r) { return richardson_zaki_exponent_khan_richardson(r.in<T>(0), r.in<T>(1)); }},
+       [](const Row& r) { return settling::KhanRichardsonExponent{r.in<T>(1)}(r.in<T>(0)); }},
       {"rz_exponent_richardson_zaki1954",
-       [](const Row& r) { return richardson_zaki_exponent_1954(r.in<T>(0), r.in<T>(1)); }},
+       [](const Row& r) { return settling::RichardsonZaki1954Exponent{r.in<T>(1)}(r.in<T>(0)); }},
       {"richardson_zaki_velocity",
-       [](const Row& r) { return richardson_zaki_velocity(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+       [](const Row& r) { return settling::richardson_zaki_velocity(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
       {"richardson_zaki_voidage",
-       [](const Row& r) { return richardson_zaki_voidage(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+       [](const Row& r) { return settling::richardson_zaki_voidage(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
       {"richardson_zaki_terminal_reynolds",
-       [](const Row& r) { return richardson_zaki_terminal_reynolds(r.in<T>(0), r.in<T>(1)); }},
-      {"terminal_reynolds_stokes", [](const Row& r) { return terminal_reynolds_stokes(r.in<T>(0)); }},
-      {"terminal_reynolds_newton", [](const Row& r) { return terminal_reynolds_newton(r.in<T>(0)); }},
-      {"terminal_reynolds_dallavalle", [](const Row& r) { return terminal_reynolds_dallavalle(r.in<T>(0)); }},
+       [](const Row& r) { return settling::richardson_zaki_terminal_reynolds(r.in<T>(0), r.in<T>(1)); }},
+      {"terminal_reynolds_stokes", [](const Row& r) { return single_particle::StokesTerminalVelocity{}.reynolds(r.in<T>(0)); }},
+      {"terminal_reynolds_newton", [](const Row& r) { return single_particle::NewtonTerminalVelocity{}.reynolds(r.in<T>(0)); }},
+      {"terminal_reynolds_dallavalle", [](const Row& r) { return single_particle::DallavalleTerminalVelocity{}.reynolds(r.in<T>(0)); }},
       {"terminal_reynolds_schiller_naumann",
-       [](const Row& r) { return terminal_reynolds_schiller_naumann(r.in<T>(0)); }},
+       [](const Row& r) { return single_particle::SchillerNaumannTerminalVelocity{}.reynolds(r.in<T>(0)); }},
       {"terminal_velocity_stokes",
-       [](const Row& r) { return terminal_velocity_stokes(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) { return single_particle::StokesTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"terminal_velocity_newton",
-       [](const Row& r) { return terminal_velocity_newton(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) { return single_particle::NewtonTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"terminal_velocity_dallavalle",
-       [](const Row& r) { return terminal_velocity_dallavalle(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) { return single_particle::DallavalleTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"terminal_velocity_schiller_naumann",
-       [](const Row& r) { return terminal_velocity_schiller_naumann(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) { return single_particle::SchillerNaumannTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"minimum_fluidization_velocity_ergun",
        [](const Row& r) {
-         return minimum_fluidization_velocity_ergun(fluid_of<T>(r, 0), particles_of<T>(r, 0), r.in<T>(4), r.in<T>(5));
+         return fluidization::ErgunMinimumFluidization{r.in<T>(4), r.in<T>(5)}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
        }},
       {"minimum_fluidization_reynolds_ergun",
-       [](const Row& r) { return minimum_fluidization_reynolds_ergun(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+       [](const Row& r) { return fluidization::ErgunMinimumFluidization{r.in<T>(1), r.in<T>(2)}.reynolds(r.in<T>(0)); }},
       {"minimum_fluidization_velocity_wen_yu",
-       [](const Row& r) { return minimum_fluidization_velocity_wen_yu(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) { return fluidization::WenYuMinimumFluidization{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"minimum_fluidization_reynolds_wen_yu",
-       [](const Row& r) { return minimum_fluidization_reynolds_wen_yu(r.in<T>(0)); }},
+       [](const Row& r) { return fluidization::WenYuMinimumFluidization{}.reynolds(r.in<T>(0)); }},
       {"equilibrium_voidage_RichardsonZaki",
        [](const Row& r) {
-         return required(richardson_zaki_equilibrium_voidage(r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
+         return required(fluidization::richardson_zaki_equilibrium_voidage(r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
        }},
-      {"bed_height", [](const Row& r) { return bed_height(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
+      {"bed_height", [](const Row& r) { return fluidization::bed_height(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
   };
   for (const drag::AnyDragLaw& law : drag::all_drag_laws) {
     const std::string name(drag::name_of(law));
     q["equilibrium_voidage_" + name] = [law](const Row& r) {
-      return required(equilibrium_voidage(law, r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
+      return required(fluidization::equilibrium_voidage(law, r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
     };
-    q["voidage_ratio_" + name] = [law](const Row& r) { return required(voidage_ratio(law, r.in<T>(0), r.in<T>(1))); };
-    q["equivalent_exponent_" + name] = [law](const Row& r) { return equivalent_exponent(law, r.in<T>(0), r.in<T>(1)); };
+    q["voidage_ratio_" + name] = [law](const Row& r) { return required(fluidization::voidage_ratio(law, r.in<T>(0), r.in<T>(1))); };
+    q["equivalent_exponent_" + name] = [law](const Row& r) { return fluidization::equivalent_exponent(law, r.in<T>(0), r.in<T>(1)); };
   }
   return q;
 }
@@ -142,10 +144,10 @@ TEST_CASE_TEMPLATE("every settling function and the equilibrium of every drag la
 TEST_CASE_TEMPLATE("Richardson-Zaki 1954: each band starts at its switch in the argument's type", T,
                    FLUIDBED_SCALAR_TYPES) {
   const T wall = T(0);
-  CHECK(richardson_zaki_exponent_1954(T(0.2L), wall) == T(4.35L) * std::pow(T(0.2L), T(-0.03L)));
-  CHECK(richardson_zaki_exponent_1954(std::nextafter(T(0.2L), T(0)), wall) == T(4.65L));
-  CHECK(richardson_zaki_exponent_1954(T(1), wall) == T(4.45L));
-  CHECK(richardson_zaki_exponent_1954(T(500), wall) == T(2.39L));
+  CHECK(settling::RichardsonZaki1954Exponent{wall}(T(0.2L)) == T(4.35L) * std::pow(T(0.2L), T(-0.03L)));
+  CHECK(settling::RichardsonZaki1954Exponent{wall}(std::nextafter(T(0.2L), T(0))) == T(4.65L));
+  CHECK(settling::RichardsonZaki1954Exponent{wall}(T(1)) == T(4.45L));
+  CHECK(settling::RichardsonZaki1954Exponent{wall}(T(500)) == T(2.39L));
 }
 
 // Syamlal–O'Brien calibrated from a minimum fluidization state (u_mf, ε_mf) holds the bed at
@@ -157,9 +159,9 @@ TEST_CASE_TEMPLATE("Syamlal-O'Brien calibrated from minimum fluidization holds t
   const Particles<T> sand{T(2500), T(2.44140625e-4L)};
   for (const auto& state : {std::pair{T(0.4375L), T(0.001953125L)}, std::pair{T(0.875L), T(0.015625L)}}) {
     const T voidage = state.first, velocity = state.second;  // clang < 16 captures no structured binding
-    const drag::SyamlalOBrien law = drag::SyamlalOBrien::from_minimum_fluidization(velocity, voidage, water, sand);
+    const drag::SyamlalOBrien law = fluidization::syamlal_obrien_from_minimum_fluidization(velocity, voidage, water, sand);
     INFO("eps_mf " << double(voidage) << ": c1 " << law.c1() << ", d1 " << law.d1());
-    const T equilibrium = required(equilibrium_voidage(law, velocity, water, sand));
+    const T equilibrium = required(fluidization::equilibrium_voidage(law, velocity, water, sand));
     CHECK(test::error_in_epsilons(equilibrium, static_cast<long double>(voidage)) <= chained_tolerance);
   }
 }

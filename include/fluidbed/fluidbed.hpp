@@ -1,8 +1,10 @@
 // fluidbed — umbrella header: every closure of the library.
 #pragma once
 
-#include "drag.hpp"
+#include "single_particle.hpp"
 #include "settling.hpp"
+#include "drag.hpp"
+#include "fluidization.hpp"
 #include "elastic.hpp"
 #include "interaction.hpp"
 #include "kinetic_theory.hpp"

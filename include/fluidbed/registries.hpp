@@ -6,6 +6,10 @@
 #include <type_traits>
 
 #include "drag.hpp"
+#include "fluidization/minimum_fluidization.hpp"
+#include "settling/richardson_zaki.hpp"
+#include "single_particle/drag_coefficient.hpp"
+#include "single_particle/terminal_velocity.hpp"
 
 namespace fluidbed {
 
@@ -18,6 +22,7 @@ struct RegistryList {
   }
 };
 
-using Registries = RegistryList<drag::DragLaws>;
+using Registries = RegistryList<single_particle::DragCoefficients, single_particle::TerminalVelocities,
+                                settling::RichardsonZakiExponents, fluidization::MinimumFluidizations, drag::DragLaws>;
 
 }  // namespace fluidbed

@@ -75,7 +75,7 @@ FLUIDBED_HOST_DEVICE void elastic_cell(int i, double* out) {
   const auto force = elastic::elastic_force(scaled(d.beta, slip), voidage_gradient, d.sensitivity, state.diameter);
   out[i * 3 + 0] = force[1];
   out[i * 3 + 1] = force[2];
-  out[i * 3 + 2] = settling::richardson_zaki_exponent_mazzei(1.0 + 10.0 * i);
+  out[i * 3 + 2] = settling::MazzeiExponent{}(1.0 + 10.0 * i);
 }
 
 template <void (*Cell)(int, double*)>

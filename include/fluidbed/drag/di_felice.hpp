@@ -6,7 +6,7 @@
 
 #include "../core/constants.hpp"
 #include "drag_law.hpp"
-#include "single_particle.hpp"
+#include "../single_particle/drag_coefficient.hpp"
 
 namespace fluidbed::drag {
 
@@ -26,12 +26,12 @@ namespace fluidbed::drag {
 // seed 000 (Fig. 3.3) plugs α_d into the Schiller–Naumann eq. 3.34. The two differ by
 // ~10 % at Re ≈ 10.
 // Validity: Di Felice's data, 0.4 ≲ ε < 1 and 10⁻² < Re < 10⁴.
-template <class Coefficient = DallavalleCoefficient>
+template <class Coefficient = single_particle::DallavalleCoefficient>
 struct DiFelice : DragLaw<DiFelice<Coefficient>> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
   constexpr std::string_view name() const {
-    if constexpr (std::is_same_v<Coefficient, DallavalleCoefficient>) return "DiFeliceDallavalle";
+    if constexpr (std::is_same_v<Coefficient, single_particle::DallavalleCoefficient>) return "DiFeliceDallavalle";
     else return "DiFeliceSchillerNaumann";
   }
   constexpr std::string_view reference() const {
@@ -55,7 +55,7 @@ struct DiFelice : DragLaw<DiFelice<Coefficient>> {
                                      const T& diameter) const {
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return detail::single_particle_beta(Coefficient::cd_times_re(re), voidage, fluid.viscosity, diameter) *
+    return single_particle::unhindered_beta(Coefficient::cd_times_re(re), voidage, fluid.viscosity, diameter) *
            pow(voidage, 2 - exponent(re));
   }
 };

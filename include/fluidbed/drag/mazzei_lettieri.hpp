@@ -8,8 +8,8 @@
 
 #include "../core/dual.hpp"
 #include "../settling/richardson_zaki.hpp"
+#include "../single_particle/drag_coefficient.hpp"
 #include "drag_law.hpp"
-#include "single_particle.hpp"
 
 namespace fluidbed::drag {
 
@@ -66,8 +66,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
       using std::log;
       const T log_re_star = log(re_star);
       const T slope =
-          T(1) + re_star * settling::richardson_zaki_exponent_mazzei_derivative(re_star) * T(log(value_of(voidage)));
-      const S residual = log_re_star + settling::richardson_zaki_exponent_mazzei(re_star) * log(voidage) - log(re);
+          T(1) + re_star * settling::MazzeiExponent{}.exponent(Dual<T, 1>::variable(re_star, 0)).derivative[0] * T(log(value_of(voidage)));
+      const S residual = log_re_star + settling::MazzeiExponent{}.exponent(re_star) * log(voidage) - log(re);
       S result = exp(log_re_star - residual / slope);
       result.value = re_star;  // the same value as the plain evaluation, bit for bit
       return result;
@@ -83,7 +83,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using T = value_type_of<S>;
     const S re_star = effective_reynolds(voidage, re);
     const S ratio = (T(0.63L) * sqrt(re_star) + T(4.8L)) / (T(0.63L) * sqrt(re) + T(4.8L));
-    return ratio * ratio * pow(voidage, 2 - settling::richardson_zaki_exponent_mazzei(re_star));
+    return ratio * ratio * pow(voidage, 2 - settling::MazzeiExponent{}.exponent(re_star));
   }
 
   // ψ_e(ε, Re) = −ln φ_ML/ln ε (eq. 3.64). At ε = 1 the limit n_e (2 − D) − 2 with
@@ -96,7 +96,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     if (voidage == S(1)) {
       using T = value_type_of<S>;
       const S d = T(4.8L) / (T(0.63L) * sqrt(re) + T(4.8L));
-      return settling::richardson_zaki_exponent_mazzei(re) * (2 - d) - 2;
+      return settling::MazzeiExponent{}(re) * (2 - d) - 2;
     }
     return -log(voidage_function(voidage, re)) / log(voidage);
   }
@@ -117,8 +117,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   FLUIDBED_HOST_DEVICE static SolvedState<T> solve_state(const T& re, const T& voidage) {
     using std::exp;
     using std::sqrt;
-    const auto r = settling::detail::solve_terminal_reynolds(re, voidage);
-    const T n = settling::detail::exponent_of_scaled_power(r.scaled_power);
+    const auto r = settling::solve_richardson_zaki_terminal_reynolds(re, voidage);
+    const T n = settling::MazzeiExponent::of_scaled_power(r.scaled_power);
     return {sqrt(re), exp(T(-0.5) * n * r.log_voidage), r.scaled_power, r.log_voidage, n};
   }
 
@@ -158,8 +158,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     const S re_star = effective_reynolds(voidage, re);
     // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
-    const S exponent = value_of(re) > 0 ? settling::richardson_zaki_exponent_mazzei(re_star) : S(T(4.8L));
-    S beta = prefactor * (1 - voidage) * DallavalleCoefficient::cd_times_re(re_star) * pow(voidage, 1 - exponent);
+    const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(T(4.8L));
+    S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) * pow(voidage, 1 - exponent);
     if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
       if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
     return beta;

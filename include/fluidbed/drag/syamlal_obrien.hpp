@@ -1,4 +1,5 @@
-// fluidbed — Syamlal–O'Brien drag (MFiX), with its calibration from minimum fluidization.
+// fluidbed — Syamlal–O'Brien drag (MFiX). Its calibration from a measured minimum fluidization
+// state is fluidization::syamlal_obrien_from_minimum_fluidization (fluidization/syamlal_obrien_calibration.hpp).
 #pragma once
 
 #include <cmath>
@@ -6,11 +7,9 @@
 
 #include "../core/config.hpp"
 #include "../core/dual.hpp"
-#include "../core/errors.hpp"
 #include "../properties.hpp"
-#include "../settling/terminal_velocity_closed_forms.hpp"
+#include "../single_particle/drag_coefficient.hpp"
 #include "drag_law.hpp"
-#include "single_particle.hpp"
 
 namespace fluidbed::drag {
 
@@ -27,7 +26,7 @@ namespace fluidbed::drag {
 //   β_pressure_gradient = ¾ C_D(Re_s/V_r) φ ε ρ_f w / (V_r² d)
 //                       = ¾ μ_f φ ε (0.63 √(Re_s/V_r) + 4.8)² / (V_r d²),
 //
-// C_D the Dallavalle coefficient (single_particle.hpp). V_r is the ratio of the terminal
+// C_D the Dallavalle coefficient (single_particle/drag_coefficient.hpp). V_r is the ratio of the terminal
 // velocity of the suspension to that of an isolated particle: it solves Garside and
 // Al-Dibouni's V_r (1 + 0.06 Re_t) = A + 0.06 B Re_t with Re_t = Re_s/V_r. Native
 // convention: pressure_gradient (MFiX's and OpenFOAM's). Not in the seeds (seed 001 cites
@@ -55,51 +54,6 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
   // d1 given, c1 = 0.85^(d1 − 1.28): B continuous at ε = 0.85.
   static SyamlalOBrien continuous_at_switch(double d1) {
     return SyamlalOBrien(std::pow(double(switch_voidage), d1 - 1.28), d1);
-  }
-
-  // Calibration from a measured minimum fluidization state (superficial velocity u_mf at
-  // voidage ε_mf), the procedure the MFiX documentation describes, derived here from the
-  // law's own force balance. At incipient fluidization in the −φ∇p convention
-  // β w = φ ε (ρ_p − ρ_f) g with w = u_mf/ε_mf, i.e. ¾ C_D(Re_t) Re_t² = Ar, Re_t = Re_s/V_r:
-  //   1. Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f²;
-  //   2. Re_t from Ar by Dallavalle's closed form (settling::terminal_reynolds_dallavalle);
-  //   3. V_r = Re_s,mf / Re_t,  Re_s,mf = ρ_f (u_mf/ε_mf) d/μ_f;
-  //   4. B = [V_r (1 + 0.06 Re_t) − A]/(0.06 Re_t),  A = ε_mf^4.14;
-  //   5. ε_mf ≤ 0.85: c1 = B/ε_mf^1.28, d1 = 1.28 + ln c1/ln 0.85 (continuity at 0.85);
-  //      ε_mf > 0.85: d1 = ln B/ln ε_mf, c1 = 0.85^(d1 − 1.28).
-  // The law then reproduces u_mf exactly at ε_mf. Throws std::domain_error for invalid
-  // input, and when u_mf is so small that B ≤ 0 (V_r ≤ A/(1 + 0.06 Re_t)).
-  template <class T>
-  static SyamlalOBrien from_minimum_fluidization(const T& velocity, const T& voidage, const Fluid<T>& fluid,
-                                                 const Particles<T>& particles,
-                                                 const T& gravity = standard_gravity_as<T>()) {
-    using std::log;
-    using std::pow;
-    constexpr std::string_view function = "SyamlalOBrien::from_minimum_fluidization";
-    require_positive(function, "minimum_fluidization_velocity", velocity);
-    require_in_open(function, "minimum_fluidization_voidage", voidage, T(0), T(1));
-    settling::detail::validate_settling(function, fluid, particles, gravity);
-    const T archimedes_number = archimedes(fluid, particles, gravity);
-    const T re_terminal = settling::terminal_reynolds_dallavalle(archimedes_number);
-    const T ratio = fluid.density * (velocity / voidage) * particles.diameter / fluid.viscosity / re_terminal;
-    const T b = (ratio * (1 + T(0.06L) * re_terminal) - pow(voidage, T(4.14L))) / (T(0.06L) * re_terminal);
-    if (!(b > T(0)))
-      fluidbed::detail::throw_domain_error(function, "minimum_fluidization_velocity", velocity,
-                                           "too small for this law: it implies B <= 0");
-    const SyamlalOBrien law = [&] {
-      if (voidage <= T(switch_voidage)) {
-        const T c1 = b / pow(voidage, T(1.28L));
-        return SyamlalOBrien(static_cast<double>(c1),
-                             static_cast<double>(T(1.28L) + log(c1) / log(T(switch_voidage))));
-      }
-      return continuous_at_switch(static_cast<double>(log(b) / log(voidage)));
-    }();
-    // Valid data can still imply parameters beyond the range (ε_mf → 1: d1 = ln B/ln ε_mf with
-    // ln ε_mf → 0; a subnormal g), with which β would be 0, ∞ or NaN (found by fuzz/).
-    if (!(std::isfinite(law.c1()) && law.c1() > 0 && std::isfinite(law.d1())))
-      fluidbed::detail::throw_domain_error(function, "minimum_fluidization_voidage", voidage,
-                                           "with these data it implies c1 or d1 beyond the floating-point range");
-    return law;
   }
 
   constexpr double c1() const { return c1_; }
@@ -132,7 +86,7 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     const S re_s = fluid.density * diameter / fluid.viscosity * slip;
     const S ratio = velocity_ratio(voidage, re_s);
     return T(0.75) * fluid.viscosity / (diameter * diameter) * (voidage * (1 - voidage)) *
-           DallavalleCoefficient::cd_times_re(S(re_s / ratio)) / ratio;
+           single_particle::DallavalleCoefficient::cd_times_re(S(re_s / ratio)) / ratio;
   }
 
  private:

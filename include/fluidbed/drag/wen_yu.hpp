@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "drag_law.hpp"
-#include "single_particle.hpp"
+#include "../single_particle/drag_coefficient.hpp"
 
 namespace fluidbed::drag {
 
@@ -70,7 +70,7 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
                                      const T& diameter) const {
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return detail::single_particle_beta(SchillerNaumannCoefficient::cd_times_re(re), voidage, fluid.viscosity,
+    return single_particle::unhindered_beta(single_particle::SchillerNaumannCoefficient::cd_times_re(re), voidage, fluid.viscosity,
                                         diameter) *
            pow(voidage, T(-exponent_));
   }

@@ -15,44 +15,63 @@
 #include <concepts>
 #include <optional>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
+#include "../core/errors.hpp"
 #include "../core/root_finding.hpp"
-#include "../drag/any_drag_law.hpp"
 #include "../drag/drag_law.hpp"
-#include "../drag/single_particle.hpp"
 #include "../properties.hpp"
-#include "richardson_zaki.hpp"
-#include "terminal_velocity.hpp"
+#include "../settling/richardson_zaki.hpp"
+#include "../single_particle/drag_coefficient.hpp"
+#include "../single_particle/terminal_velocity_closed_forms.hpp"
 
-namespace fluidbed::settling {
+namespace fluidbed::fluidization {
 
-// What the equilibrium solvers accept: a law with the DragLaw calling shape (β from
-// law(state).classical(), ∂β/∂ε from law.with_derivatives(state)), or drag::AnyDragLaw.
+// One drag law with the DragLaw calling shape (β from law(state).classical(), ∂β/∂ε from
+// law.with_derivatives(state)).
 template <class Law, class T>
-concept DragLawFor = std::same_as<Law, drag::AnyDragLaw> || requires(const Law& law, const drag::DragState<T>& state) {
+concept SingleDragLawFor = requires(const Law& law, const drag::DragState<T>& state) {
   { law(state).classical() } -> std::convertible_to<T>;
   { law.with_derivatives(state).classical().d_voidage } -> std::convertible_to<T>;
 };
 
 namespace detail {
 
-// β_classical and ∂β_classical/∂ε of a law with the DragLaw calling shape, or of a
-// run-time-selected drag::AnyDragLaw.
+template <class Law, class T>
+struct is_variant_of_drag_laws : std::false_type {};
+template <class... Laws, class T>
+struct is_variant_of_drag_laws<std::variant<Laws...>, T> : std::bool_constant<(SingleDragLawFor<Laws, T> && ...)> {};
+
+template <class Law>
+inline constexpr bool is_variant = false;
+template <class... Laws>
+inline constexpr bool is_variant<std::variant<Laws...>> = true;
+
+}  // namespace detail
+
+// What the equilibrium solvers accept: one drag law, or a std::variant of drag laws (any
+// registry's Variant: drag::AnyDragLaw, or a user's DragLaws::with<MyLaw>::Variant).
+template <class Law, class T>
+concept DragLawFor = SingleDragLawFor<Law, T> || detail::is_variant_of_drag_laws<Law, T>::value;
+
+namespace detail {
+
+// β_classical and ∂β_classical/∂ε of one law or of a variant of laws.
+template <class Law, class F>
+decltype(auto) with_law(const Law& law, F&& f) {
+  if constexpr (is_variant<Law>)
+    return std::visit(f, law);
+  else
+    return f(law);
+}
 template <class Law, class T>
 T classical_beta(const Law& law, const drag::DragState<T>& state) {
-  return law(state).classical();
-}
-template <class T>
-T classical_beta(const drag::AnyDragLaw& law, const drag::DragState<T>& state) {
-  return drag::evaluate(law, state).classical();
+  return with_law(law, [&](const auto& l) -> T { return l(state).classical(); });
 }
 template <class Law, class T>
 T classical_beta_voidage_slope(const Law& law, const drag::DragState<T>& state) {
-  return law.with_derivatives(state).classical().d_voidage;
-}
-template <class T>
-T classical_beta_voidage_slope(const drag::AnyDragLaw& law, const drag::DragState<T>& state) {
-  return drag::evaluate_with_derivatives(law, state).classical().d_voidage;
+  return with_law(law, [&](const auto& l) -> T { return l.with_derivatives(state).classical().d_voidage; });
 }
 
 // The equilibrium relation (3.28) divided by (1 − ε)(ρ_p − ρ_f) g, minus one:
@@ -81,44 +100,31 @@ struct EquilibriumResidual {
   }
 };
 
+// The domain of the equilibrium solvers, declared once: the settling system's, then u_s > 0.
 template <class T>
-[[noreturn]] void throw_no_homogeneous_bed(std::string_view function, const T& superficial_velocity) {
-  fluidbed::detail::throw_domain_error(
-      function, "superficial_velocity", superficial_velocity,
-      "at or above the single-particle terminal velocity: no homogeneous bed, the particles are carried out");
+constexpr Arguments<T, 6> equilibrium_domain(const T& superficial_velocity, const Fluid<T>& fluid,
+                                             const Particles<T>& particles, const T& gravity) {
+  return join(single_particle::settling_domain(fluid, particles, gravity),
+              arguments(Argument<T>{"superficial_velocity", superficial_velocity, domains::positive<T>()}));
 }
 
-}  // namespace detail
+// Under fluidbed::checked, no homogeneous bed is an error; otherwise it is the empty result.
+template <ErrorPolicy Policy, class T>
+void check_bed_exists(Policy, std::string_view function, const std::optional<T>& voidage,
+                      const T& superficial_velocity) {
+  if constexpr (std::same_as<Policy, Checked>)
+    if (!voidage)
+      fluidbed::detail::throw_domain_error(
+          function, "superficial_velocity", superficial_velocity,
+          "at or above the single-particle terminal velocity: no homogeneous bed, the particles are carried out");
+}
 
-// ----------------------------------------------------------------------------- any drag law
-
-// The voidage at which `law` holds a homogeneous bed in equilibrium at the superficial
-// velocity u_s (seed 000 eq. 3.28), or nothing when u_s is at or above the law's own
-// single-particle terminal velocity (the limit of eq. 3.28 as ε → 1): then there is no
-// homogeneous bed, the particles are carried out.
-//
-// `law` is any type with the DragLaw calling shape (law(DragState<T>).classical() and
-// law.with_derivatives(state)), or a run-time-selected drag::AnyDragLaw. The relation is
-// divided by (1 − ε) to remove the trivial root ε = 1 and solved with Boost.Math toms748
-// on a bracket in (0, 1]. Every law of the library gives a residual that decreases with ε
-// and so a single root; for a law with several, the lowest is returned: the scan on
-// ε = k/64 brackets the first sign change (roots closer together than 1/64 may be passed
-// over). A law discontinuous in ε (drag::GidaspowSwitched at ε = 0.8) may change sign at
-// its jump without a root; the jump is then returned, the only voidage where the bed can
-// sit. At a fixed u_s the Reynolds number is fixed, so Reynolds switches (the
-// Schiller–Naumann one at Re = 1000) are never crossed.
-// Below minimum fluidization the returned voidage is lower than the packed bed's: the law
-// balances the weight only in a bed denser than the real one, which stays fixed.
-// Nothing is also returned if the law balances the weight at no voidage above 2⁻⁷⁰
-// (G > 0 somewhere near ε = 0 holds for every law of the library).
-// Preconditions: u_s > 0, ρ_f, μ_f, d, g > 0, ρ_p > ρ_f.
+// The lowest root of the equilibrium residual, or nothing (see equilibrium_voidage).
 template <class Law, class T>
-requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law, const T& superficial_velocity,
-                                                                 const Fluid<T>& fluid, const Particles<T>& particles,
-                                                                 const T& gravity = standard_gravity_as<T>()) {
-  FLUIDBED_EXPECTS(superficial_velocity > T(0) && detail::valid_settling_inputs(fluid, particles, gravity));
-  const detail::EquilibriumResidual<Law, T> residual{law, superficial_velocity, fluid, particles.diameter,
-                                                     (particles.density - fluid.density) * gravity};
+std::optional<T> lowest_equilibrium_voidage(const Law& law, const T& superficial_velocity, const Fluid<T>& fluid,
+                                            const Particles<T>& particles, const T& gravity) {
+  const EquilibriumResidual<Law, T> residual{law, superficial_velocity, fluid, particles.diameter,
+                                             (particles.density - fluid.density) * gravity};
   const T at_one = residual(T(1));
   if (!(at_one < T(0))) return std::nullopt;  // u_s >= the law's single-particle u_t
   // Bracket the lowest root: scan ε = k/64 upwards for the first sign change, or, if G
@@ -154,18 +160,51 @@ requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law,
   return fluidbed::detail::bracketed_root(residual, lower, upper, at_lower, at_upper);
 }
 
-// As equilibrium_voidage, validating its arguments; throws std::domain_error when there
-// is no homogeneous bed.
-template <class Law, class T>
-requires DragLawFor<Law, T> T equilibrium_voidage_checked(const Law& law, const T& superficial_velocity,
-                                                          const Fluid<T>& fluid, const Particles<T>& particles,
-                                                          const T& gravity = standard_gravity_as<T>()) {
+}  // namespace detail
+
+// ----------------------------------------------------------------------------- any drag law
+
+// The voidage at which `law` holds a homogeneous bed in equilibrium at the superficial
+// velocity u_s (seed 000 eq. 3.28), or nothing when u_s is at or above the law's own
+// single-particle terminal velocity (the limit of eq. 3.28 as ε → 1): then there is no
+// homogeneous bed, the particles are carried out.
+//
+// `law` is any type with the DragLaw calling shape (law(DragState<T>).classical() and
+// law.with_derivatives(state)), or a std::variant of such laws (drag::AnyDragLaw, any
+// registry's Variant). The relation is
+// divided by (1 − ε) to remove the trivial root ε = 1 and solved with Boost.Math toms748
+// on a bracket in (0, 1]. Every law of the library gives a residual that decreases with ε
+// and so a single root; for a law with several, the lowest is returned: the scan on
+// ε = k/64 brackets the first sign change (roots closer together than 1/64 may be passed
+// over). A law discontinuous in ε (drag::GidaspowSwitched at ε = 0.8) may change sign at
+// its jump without a root; the jump is then returned, the only voidage where the bed can
+// sit. At a fixed u_s the Reynolds number is fixed, so Reynolds switches (the
+// Schiller–Naumann one at Re = 1000) are never crossed.
+// Below minimum fluidization the returned voidage is lower than the packed bed's: the law
+// balances the weight only in a bed denser than the real one, which stays fixed.
+// Nothing is also returned if the law balances the weight at no voidage above 2⁻⁷⁰
+// (G > 0 somewhere near ε = 0 holds for every law of the library).
+// Domain: u_s > 0, ρ_f, μ_f, d, g > 0, ρ_p > ρ_f. With fluidbed::checked, an argument out
+// of it, and the absence of a homogeneous bed, throw std::domain_error (the result is then
+// never empty).
+template <class Law, class T, ErrorPolicy Policy = Unchecked>
+requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law, const T& superficial_velocity,
+                                                                 const Fluid<T>& fluid, const Particles<T>& particles,
+                                                                 const T& gravity, Policy policy = {}) {
   constexpr std::string_view function = "equilibrium_voidage";
-  detail::validate_settling(function, fluid, particles, gravity);
-  require_positive(function, "superficial_velocity", superficial_velocity);
-  const std::optional<T> voidage = equilibrium_voidage(law, superficial_velocity, fluid, particles, gravity);
-  if (!voidage) detail::throw_no_homogeneous_bed(function, superficial_velocity);
-  return *voidage;
+  check_domain(policy, function, detail::equilibrium_domain(superficial_velocity, fluid, particles, gravity));
+  const std::optional<T> voidage =
+      detail::lowest_equilibrium_voidage(law, superficial_velocity, fluid, particles, gravity);
+  detail::check_bed_exists(policy, function, voidage, superficial_velocity);
+  return voidage;
+}
+
+// The same at standard gravity.
+template <class Law, class T, ErrorPolicy Policy = Unchecked>
+requires DragLawFor<Law, T> std::optional<T> equilibrium_voidage(const Law& law, const T& superficial_velocity,
+                                                                 const Fluid<T>& fluid, const Particles<T>& particles,
+                                                                 Policy policy = {}) {
+  return equilibrium_voidage(law, superficial_velocity, fluid, particles, standard_gravity_as<T>(), policy);
 }
 
 // ----------------------------------------------------------------------------- Richardson–Zaki
@@ -173,48 +212,50 @@ requires DragLawFor<Law, T> T equilibrium_voidage_checked(const Law& law, const 
 // The Richardson–Zaki expansion ε = (u_s/u_t)^(1/n) with Dallavalle's u_t and n from
 // seed 000 eq. 3.24 at Re_t: the ε_R&Z column of seed 000 Table 4.4 (only Dallavalle's u_t
 // reproduces it), and exactly the expansion of the Mazzei–Lettieri drag. Nothing when u_s >= u_t.
-// Preconditions: u_s > 0, ρ_f, μ_f, d, g > 0, ρ_p > ρ_f.
-template <class T>
+// Domain and policy as equilibrium_voidage's.
+template <class T, ErrorPolicy Policy = Unchecked>
 std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_velocity, const Fluid<T>& fluid,
-                                                     const Particles<T>& particles,
-                                                     const T& gravity = standard_gravity_as<T>()) {
-  FLUIDBED_EXPECTS(superficial_velocity > T(0));
-  const T terminal = terminal_velocity_dallavalle(fluid, particles, gravity);
-  if (!(superficial_velocity < terminal)) return std::nullopt;
-  const T exponent = richardson_zaki_exponent_mazzei(terminal_reynolds(fluid, particles.diameter, terminal));
-  return richardson_zaki_voidage(superficial_velocity, terminal, exponent);
+                                                     const Particles<T>& particles, const T& gravity,
+                                                     Policy policy = {}) {
+  constexpr std::string_view function = "richardson_zaki_equilibrium_voidage";
+  check_domain(policy, function, detail::equilibrium_domain(superficial_velocity, fluid, particles, gravity));
+  const T terminal = single_particle::DallavalleTerminalVelocity{}(fluid, particles, gravity);
+  std::optional<T> voidage;
+  if (superficial_velocity < terminal) {
+    const T exponent = settling::MazzeiExponent{}(terminal_reynolds(fluid, particles.diameter, terminal));
+    voidage = settling::richardson_zaki_voidage(superficial_velocity, terminal, exponent);
+  }
+  detail::check_bed_exists(policy, function, voidage, superficial_velocity);
+  return voidage;
 }
 
-template <class T>
-T richardson_zaki_equilibrium_voidage_checked(const T& superficial_velocity, const Fluid<T>& fluid,
-                                              const Particles<T>& particles,
-                                              const T& gravity = standard_gravity_as<T>()) {
-  constexpr std::string_view function = "richardson_zaki_equilibrium_voidage";
-  detail::validate_settling(function, fluid, particles, gravity);
-  require_positive(function, "superficial_velocity", superficial_velocity);
-  const std::optional<T> voidage = richardson_zaki_equilibrium_voidage(superficial_velocity, fluid, particles, gravity);
-  if (!voidage) detail::throw_no_homogeneous_bed(function, superficial_velocity);
-  return *voidage;
+// The same at standard gravity.
+template <class T, ErrorPolicy Policy = Unchecked>
+std::optional<T> richardson_zaki_equilibrium_voidage(const T& superficial_velocity, const Fluid<T>& fluid,
+                                                     const Particles<T>& particles, Policy policy = {}) {
+  return richardson_zaki_equilibrium_voidage(superficial_velocity, fluid, particles, standard_gravity_as<T>(), policy);
 }
 
 // ----------------------------------------------------------------------------- comparisons
 
 // ε_law / ε_R&Z at the equilibrium Reynolds number Re = ρ_f u_s d/μ_f and the
 // Richardson–Zaki voidage ε_R&Z, as plotted in seed 000 Figs 3.1–3.5:
-//   1. Re_t from Re = Re_t ε_R&Z^n(Re_t)           (richardson_zaki_terminal_reynolds);
+//   1. Re_t from Re = Re_t ε_R&Z^n(Re_t)           (settling::richardson_zaki_terminal_reynolds);
 //   2. Ar = ¾ C_D(Re_t) Re_t², Dallavalle's C_D   (the system whose R–Z bed that is);
 //   3. ε_law from eq. 3.28 at (Re, Ar)            (equilibrium_voidage).
 // The equilibrium depends on (Re, Ar) alone for any law built from ρ_f, μ_f, d and w, so
 // step 3 runs in the units ρ_f = μ_f = d = 1, ρ_p − ρ_f = 1, g = Ar, u_s = Re. Nothing
 // when the law has no homogeneous bed there (its single-particle u_t is below u_s; e.g.
-// Ergun, at high Re and ε_R&Z, would need ε > 1). The ratio is 1 for Mazzei–Lettieri.
-// Preconditions: Re > 0, ε_R&Z ∈ (0, 1).
-template <class Law, class T>
+// Ergun, at high Re and ε_R&Z, would need ε > 1), under either policy. The ratio is 1 for
+// Mazzei–Lettieri. Domain: Re > 0, ε_R&Z ∈ (0, 1).
+template <class Law, class T, ErrorPolicy Policy = Unchecked>
 requires DragLawFor<Law, T> std::optional<T> voidage_ratio(const Law& law, const T& reynolds,
-                                                           const T& richardson_zaki_voidage) {
-  FLUIDBED_EXPECTS(reynolds > T(0) && richardson_zaki_voidage > T(0) && richardson_zaki_voidage < T(1));
-  const T re_t = richardson_zaki_terminal_reynolds(reynolds, richardson_zaki_voidage);
-  const T ar = T(0.75) * drag::DallavalleCoefficient::cd_times_re(re_t) * re_t;
+                                                           const T& richardson_zaki_voidage, Policy policy = {}) {
+  check_domain(policy, "voidage_ratio",
+               arguments(Argument<T>{"reynolds", reynolds, domains::positive<T>()},
+                         Argument<T>{"richardson_zaki_voidage", richardson_zaki_voidage, domains::open(T(0), T(1))}));
+  const T re_t = settling::richardson_zaki_terminal_reynolds(reynolds, richardson_zaki_voidage);
+  const T ar = T(0.75) * single_particle::DallavalleCoefficient::cd_times_re(re_t) * re_t;
   const Fluid<T> unit_fluid{.density = T(1), .viscosity = T(1)};
   const Particles<T> unit_particles{.density = T(2), .diameter = T(1)};
   const std::optional<T> voidage = equilibrium_voidage(law, reynolds, unit_fluid, unit_particles, ar);
@@ -222,63 +263,43 @@ requires DragLawFor<Law, T> std::optional<T> voidage_ratio(const Law& law, const
   return *voidage / richardson_zaki_voidage;
 }
 
-// As voidage_ratio, validating its arguments (std::domain_error naming the argument and its value).
-template <class Law, class T>
-requires DragLawFor<Law, T> std::optional<T> voidage_ratio_checked(const Law& law, const T& reynolds,
-                                                                   const T& richardson_zaki_voidage) {
-  constexpr std::string_view function = "voidage_ratio";
-  require_positive(function, "reynolds", reynolds);
-  require_in_open(function, "richardson_zaki_voidage", richardson_zaki_voidage, T(0), T(1));
-  return voidage_ratio(law, reynolds, richardson_zaki_voidage);
-}
-
 // The "equivalent exponent" of a law (seed 000 eq. 3.64): writing its β as
 //   β_classical = ¾ C_D(Re) ρ_f w (1 − ε)/d · φ(ε, Re)   (eq. 3.61),
 //   ψ_e(ε, Re) = −ln φ / ln ε,
 // the voidage exponent a Wen–Yu-type law would need to give the same β. C_D is that of
 // `Coefficient`, Dallavalle's by default as in eqs. 3.55–3.65; with
-// drag::SchillerNaumannCoefficient a ConstantExponentDrag gives its α exactly. Re is the
+// single_particle::SchillerNaumannCoefficient a ConstantExponentDrag gives its α exactly. Re is the
 // multiphase Reynolds number ρ_f ε w d/μ_f; ψ_e depends on (ε, Re) alone and is evaluated
 // in the units ρ_f = μ_f = d = 1. At ε = 1 it is 0/0 (φ = 1): excluded.
-// Preconditions: ε ∈ (0, 1), Re >= 0.
-template <class Coefficient = drag::DallavalleCoefficient, class Law, class T>
-requires DragLawFor<Law, T> T equivalent_exponent(const Law& law, const T& voidage, const T& reynolds) {
+// Domain: ε ∈ (0, 1), Re >= 0.
+template <class Coefficient = single_particle::DallavalleCoefficient, class Law, class T,
+          ErrorPolicy Policy = Unchecked>
+requires DragLawFor<Law, T> T equivalent_exponent(const Law& law, const T& voidage, const T& reynolds,
+                                                  Policy policy = {}) {
   using std::log;
-  FLUIDBED_EXPECTS(voidage > T(0) && voidage < T(1) && !(reynolds < T(0)));
+  check_domain(policy, "equivalent_exponent",
+               arguments(Argument<T>{"voidage", voidage, domains::open(T(0), T(1))},
+                         Argument<T>{"reynolds", reynolds, domains::non_negative<T>()}));
   const Fluid<T> unit_fluid{.density = T(1), .viscosity = T(1)};
   const T beta = detail::classical_beta(law, drag::DragState<T>{voidage, reynolds / voidage, unit_fluid, T(1)});
   const T single =
-      drag::detail::single_particle_beta(Coefficient::cd_times_re(reynolds), voidage, unit_fluid.viscosity, T(1));
+      single_particle::unhindered_beta(Coefficient::cd_times_re(reynolds), voidage, unit_fluid.viscosity, T(1));
   return -log(beta / single) / log(voidage);
-}
-
-// As equivalent_exponent, validating its arguments (std::domain_error naming the argument and its value).
-template <class Coefficient = drag::DallavalleCoefficient, class Law, class T>
-requires DragLawFor<Law, T> T equivalent_exponent_checked(const Law& law, const T& voidage, const T& reynolds) {
-  constexpr std::string_view function = "equivalent_exponent";
-  require_in_open(function, "voidage", voidage, T(0), T(1));
-  require_non_negative(function, "reynolds", reynolds);
-  return equivalent_exponent<Coefficient>(law, voidage, reynolds);
 }
 
 // ----------------------------------------------------------------------------- bed height
 
 // h = h₀ (1 − ε₀)/(1 − ε): the height of a bed of fixed solids inventory at voidage ε,
 // given its height h₀ at ε₀ (solids volume conservation; seed 000 §4.3.3, eq. 4.5).
-// Preconditions: h₀ > 0, ε₀, ε ∈ (0, 1).
-template <class T>
-FLUIDBED_HOST_DEVICE constexpr T bed_height(const T& initial_height, const T& initial_voidage, const T& voidage) {
-  FLUIDBED_EXPECTS(initial_height > T(0) && initial_voidage > T(0) && initial_voidage < T(1) && voidage > T(0) &&
-                   voidage < T(1));
+// Domain: h₀ > 0, ε₀, ε ∈ (0, 1).
+template <class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE constexpr T bed_height(const T& initial_height, const T& initial_voidage, const T& voidage,
+                                            Policy policy = {}) {
+  check_domain(policy, "bed_height",
+               arguments(Argument<T>{"initial_height", initial_height, domains::positive<T>()},
+                         Argument<T>{"initial_voidage", initial_voidage, domains::open(T(0), T(1))},
+                         Argument<T>{"voidage", voidage, domains::open(T(0), T(1))}));
   return initial_height * (1 - initial_voidage) / (1 - voidage);
 }
 
-template <class T>
-T bed_height_checked(const T& initial_height, const T& initial_voidage, const T& voidage) {
-  require_positive("bed_height", "initial_height", initial_height);
-  require_in_open("bed_height", "initial_voidage", initial_voidage, T(0), T(1));
-  require_in_open("bed_height", "voidage", voidage, T(0), T(1));
-  return bed_height(initial_height, initial_voidage, voidage);
-}
-
-}  // namespace fluidbed::settling
+}  // namespace fluidbed::fluidization

@@ -10,56 +10,90 @@
 //   Ar   = ρ_f (ρ_p − ρ_f) g d³ / μ_f²
 // wall_ratio is d/D, the particle over the column diameter (0: no wall effect).
 //
-// The correlations differ mainly in their viscous / inertial limits (seed 000 §3.4.3):
-//   richardson_zaki_exponent_mazzei            4.80 / 2.40  (seed 000 eq. 3.24; the library's default)
-//   richardson_zaki_exponent_1954              4.65 / 2.39  (d/D = 0)
-//   richardson_zaki_exponent_rowe              4.70 / 2.343 (seed 000 quotes 2.35)
-//   richardson_zaki_exponent_khan_richardson   4.80 / 2.40  (a function of Ar; d/D < 0.0391)
-//   richardson_zaki_exponent_garside_al_dibouni 5.10 / 2.70
-// The per-cell functions are templated on the scalar S (Dual numbers included) and
-// have `_checked` versions that throw std::domain_error naming the argument.
+// The exponent correlations are value types deriving from RichardsonZakiExponent<Law>;
+// they differ mainly in their viscous / inertial limits (seed 000 §3.4.3):
+//   MazzeiExponent              4.80 / 2.40  (seed 000 eq. 3.24; the library's default)
+//   RichardsonZaki1954Exponent  4.65 / 2.39  (d/D = 0)
+//   RoweExponent                4.70 / 2.343 (seed 000 quotes 2.35)
+//   KhanRichardsonExponent      4.80 / 2.40  (a function of Ar; d/D < 0.0391)
+//   GarsideAlDibouniExponent    5.10 / 2.70
+// Registry: RichardsonZakiExponents. The relations (richardson_zaki_velocity, _voidage,
+// _terminal_reynolds) take an error policy as their last argument: fluidbed::checked throws
+// std::domain_error naming the argument, the default asserts in debug builds.
 #pragma once
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string_view>
 #include <type_traits>
 
+#include "../core/closure.hpp"
 #include "../core/config.hpp"
+#include "../core/domain.hpp"
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
+#include "../core/registry.hpp"
 
 namespace fluidbed::settling {
 
-namespace detail {
-
-// The wall factor 1 − 2.4 (d/D)^0.27 of Khan & Richardson (1989).
-template <class S>
-FLUIDBED_HOST_DEVICE S khan_richardson_wall_factor(const S& wall_ratio) {
-  using std::pow;
-  using T = value_type_of<S>;
-  return 1 - T(2.4L) * pow(wall_ratio, T(0.27L));
-}
-
-// y = 0.175 Re_t^¾, the variable in which eq. 3.24 reads n = 2.4 + 2.4/(1 + y).
-template <class S>
-FLUIDBED_HOST_DEVICE S scaled_power(const S& terminal_reynolds) {
-  using std::pow;
-  using T = value_type_of<S>;
-  return T(0.175L) * pow(terminal_reynolds, T(0.75));
-}
-
-// Eq. 3.24 written in y = 0.175 Re_t^¾.
-template <class S>
-FLUIDBED_HOST_DEVICE S exponent_of_scaled_power(const S& y) {
-  using T = value_type_of<S>;
-  return T(2.4L) + T(2.4L) / (1 + y);
-}
-
-}  // namespace detail
-
 // ----------------------------------------------------------------------------- exponents
+
+// n and dn/dx, x the law's argument (`Law::argument`: Re_t, or Ar for Khan–Richardson).
+template <class T>
+struct ExponentWithDerivative {
+  T value;       // n
+  T d_argument;  // dn/dx
+};
+
+// CRTP base of the exponent correlations. Law provides name(), reference(), validity(),
+//   static constexpr std::string_view argument;   "terminal_reynolds" (Re_t) or "archimedes" (Ar)
+//   template <class S> S exponent(const S& x) const;   the kernel, S = T or Dual<T, 1>
+// and, if it has parameters (d/D), `template <class T> Arguments<T, N> parameter_domain() const`.
+// The base gives
+//   law(x)                          n (hot path; x >= 0 and the parameters asserted in debug builds)
+//   law.with_derivatives(x)         n and dn/dx, through Dual on the kernel
+//   law.checked(x), law.checked_with_derivatives(x)   throw std::domain_error naming the
+//                                   first argument outside its domain.
+// A host holding a RichardsonZakiExponents::Variant reads `argument` to know which number to pass.
+template <class Law>
+struct RichardsonZakiExponent {
+  // The domain of a call, declared once: x finite and >= 0, then the law's parameters.
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr auto domain(const T& x) const {
+    const Arguments<T, 1> own{{{Law::argument, x, domains::non_negative<T>()}}};
+    if constexpr (requires { self().template parameter_domain<T>(); })
+      return join(own, self().template parameter_domain<T>());
+    else
+      return own;
+  }
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& x) const {
+    FLUIDBED_EXPECTS(within(domain(value_of(x))));
+    return self().exponent(x);
+  }
+
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr ExponentWithDerivative<T> with_derivatives(const T& x) const {
+    const Dual<T, 1> n = (*this)(Dual<T, 1>::variable(x, 0));
+    return {n.value, n.derivative[0]};
+  }
+
+  template <class T>
+  T checked(const T& x) const {
+    require_within(self().name(), domain(x));
+    return (*this)(x);
+  }
+
+  template <class T>
+  ExponentWithDerivative<T> checked_with_derivatives(const T& x) const {
+    require_within(self().name(), domain(x));
+    return with_derivatives(x);
+  }
+
+ private:
+  FLUIDBED_HOST_DEVICE constexpr const Law& self() const { return static_cast<const Law&>(*this); }
+};
 
 // Mazzei (2008), seed 000 eq. 3.24; Mazzei & Lettieri (2007), Chem. Eng. Sci. 62,
 // 6129–6142, doi:10.1016/j.ces.2007.06.028:
@@ -69,24 +103,43 @@ FLUIDBED_HOST_DEVICE S exponent_of_scaled_power(const S& y) {
 // Rowe's (1987) form with the limits 4.8 (Re_t → 0) and 2.4 (Re_t → ∞) of Khan &
 // Richardson (1989) and Gibilaro (2001). Together with Dallavalle's terminal velocity it is
 // the expansion law the Mazzei–Lettieri drag reproduces exactly (seed 000 §3.4.5).
-// Precondition: Re_t >= 0. Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei(const S& terminal_reynolds) {
-  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  return detail::exponent_of_scaled_power(detail::scaled_power(terminal_reynolds));
-}
+// dn/dRe_t = −0.315 Re_t^−¼ / (1 + 0.175 Re_t^¾)² (seed 000 eq. 3.103, the function N of
+// Table 3.1 in simplified form), −∞ at Re_t = 0.
+// Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
+// Validity: every Re_t >= 0, by construction between the two limits.
+struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
+  static constexpr std::string_view argument = "terminal_reynolds";
+  constexpr std::string_view name() const { return "MazzeiExponent"; }
+  constexpr std::string_view reference() const {
+    return "Mazzei, L., Lettieri, P. (2007) Chem. Eng. Sci. 62, 6129-6142, doi:10.1016/j.ces.2007.06.028";
+  }
+  constexpr Validity<1> validity() const {
+    return {{{"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}}};
+  }
 
-// dn/dRe_t of eq. 3.24 = −0.315 Re_t^−¼ / (1 + 0.175 Re_t^¾)² (0.315 = ¾ · 0.175 · 2.4;
-// seed 000 eq. 3.103, the function N of Table 3.1 in simplified form). −∞ at Re_t = 0.
-// Precondition: Re_t >= 0.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei_derivative(const S& terminal_reynolds) {
-  using std::pow;
-  using T = value_type_of<S>;
-  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  const S one_plus_x = 1 + detail::scaled_power(terminal_reynolds);
-  return T(-0.315L) * pow(terminal_reynolds, T(-0.25)) / (one_plus_x * one_plus_x);
-}
+  // y = 0.175 Re_t^¾, the variable in which eq. 3.24 reads n = 2.4 + 2.4/(1 + y).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S scaled_power(const S& terminal_reynolds) {
+    using std::pow;
+    using T = value_type_of<S>;
+    return T(0.175L) * pow(terminal_reynolds, T(0.75));
+  }
+
+  // Eq. 3.24 written in y = 0.175 Re_t^¾ (what a caller that has y already needs: the
+  // Mazzei–Lettieri drag and elastic modulus).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S of_scaled_power(const S& y) {
+    using T = value_type_of<S>;
+    return T(2.4L) + T(2.4L) / (1 + y);
+  }
+
+  // The kernel, without the hot path's assertion: also defined at Re_t = +∞ (n = 2.4), for the
+  // callers whose Re_t may overflow the type (the Mazzei–Lettieri drag's Re* at extreme states).
+  template <class S>
+  FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
+    return of_scaled_power(scaled_power(terminal_reynolds));
+  }
+};
 
 // Richardson, J.F., Zaki, W.N. (1954), "Sedimentation and fluidisation: Part I",
 // Trans. Inst. Chem. Eng. 32, 35–53 (reprinted Chem. Eng. Res. Des. 75 (1997) S82–S100,
@@ -101,19 +154,39 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_mazzei_derivative(const S& termi
 // Re_t is that of a particle in an unbounded fluid. Piecewise and discontinuous as
 // published: at d/D = 0 the jumps are −0.085 at Re_t = 0.2, +0.10 at 1, 0 at 200 and
 // −0.0004 at 500 (the wall terms add their own). Fitted for 0 <= d/D <~ 0.1.
-// Preconditions: Re_t >= 0, 0 <= d/D < 1.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
-                                                     const std::type_identity_t<S>& wall_ratio = S(0)) {
-  using std::pow;
-  using T = value_type_of<S>;
-  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)) && !(wall_ratio < S(0)) && wall_ratio < S(1));
-  if (terminal_reynolds < constant_as<S>(0.2L)) return T(4.65L) + T(19.5) * wall_ratio;
-  if (terminal_reynolds < 1) return (T(4.35L) + T(17.5) * wall_ratio) * pow(terminal_reynolds, T(-0.03L));
-  if (terminal_reynolds < 200) return (T(4.45L) + 18 * wall_ratio) * pow(terminal_reynolds, T(-0.1L));
-  if (terminal_reynolds < 500) return T(4.45L) * pow(terminal_reynolds, T(-0.1L));
-  return S(T(2.39L));
-}
+// Parameter: d/D ∈ [0, 1) (default 0).
+struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exponent> {
+  static constexpr std::string_view argument = "terminal_reynolds";
+  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+
+  constexpr explicit RichardsonZaki1954Exponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+
+  constexpr std::string_view name() const { return "RichardsonZaki1954Exponent"; }
+  constexpr std::string_view reference() const {
+    return "Richardson, J.F., Zaki, W.N. (1954) Trans. Inst. Chem. Eng. 32, 35-53; reprinted Chem. Eng. Res. "
+           "Des. 75 (1997) S82-S100, doi:10.1016/S0263-8762(97)80006-8";
+  }
+  constexpr Validity<2> validity() const {
+    return {{{"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}, {"wall_ratio", 0.0, 0.1}}};
+  }
+
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1> parameter_domain() const {
+    return {{{"wall_ratio", T(wall_ratio), domains::closed_open(T(0), T(1))}}};
+  }
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
+    using std::pow;
+    using T = value_type_of<S>;
+    const T d_over_D = T(wall_ratio);
+    if (terminal_reynolds < constant_as<S>(0.2L)) return S(T(4.65L) + T(19.5) * d_over_D);
+    if (terminal_reynolds < 1) return (T(4.35L) + T(17.5) * d_over_D) * pow(terminal_reynolds, T(-0.03L));
+    if (terminal_reynolds < 200) return (T(4.45L) + 18 * d_over_D) * pow(terminal_reynolds, T(-0.1L));
+    if (terminal_reynolds < 500) return T(4.45L) * pow(terminal_reynolds, T(-0.1L));
+    return S(T(2.39L));
+  }
+};
 
 // Rowe, P.N. (1987), "A convenient empirical equation for estimation of the
 // Richardson–Zaki exponent", Chem. Eng. Sci. 42, 2795–2796:
@@ -121,15 +194,25 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_1954(const S& terminal_reynolds,
 //   n = (4.7 + 0.41 Re_t^¾) / (1 + 0.175 Re_t^¾),
 //
 // a smooth fit of the 1954 correlation without wall effect; limits 4.7 and
-// 0.41/0.175 = 2.342857 (seed 000 §3.4.3 quotes 2.35). Precondition: Re_t >= 0.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_rowe(const S& terminal_reynolds) {
-  using std::pow;
-  using T = value_type_of<S>;
-  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  const S x = pow(terminal_reynolds, T(0.75));
-  return (T(4.7L) + T(0.41L) * x) / (1 + T(0.175L) * x);
-}
+// 0.41/0.175 = 2.342857 (seed 000 §3.4.3 quotes 2.35).
+struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
+  static constexpr std::string_view argument = "terminal_reynolds";
+  constexpr std::string_view name() const { return "RoweExponent"; }
+  constexpr std::string_view reference() const {
+    return "Rowe, P.N. (1987) Chem. Eng. Sci. 42, 2795-2796";
+  }
+  constexpr Validity<1> validity() const {
+    return {{{"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}}};
+  }
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
+    using std::pow;
+    using T = value_type_of<S>;
+    const S x = pow(terminal_reynolds, T(0.75));
+    return (T(4.7L) + T(0.41L) * x) / (1 + T(0.175L) * x);
+  }
+};
 
 // Khan, A.R., Richardson, J.F. (1989), "Fluid-particle interactions and flow
 // characteristics of fluidized beds and settling suspensions of spherical particles",
@@ -138,19 +221,47 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_rowe(const S& terminal_reynolds)
 //   (4.8 − n)/(n − 2.4) = X,   X = 0.043 Ar^0.57 [1 − 2.4 (d/D)^0.27],
 //   i.e. n = 2.4 + 2.4/(1 + X),
 //
-// a function of Ar (not of Re_t). Limits 4.8 (Ar → 0) and 2.4 (Ar → ∞). The wall factor
-// is positive only for d/D < (1/2.4)^(1/0.27) = 0.0391; beyond, X < 0, n grows with Ar
-// and has a pole at X = −1: the correlation has left its data, and such d/D are out of
-// domain. Preconditions: Ar >= 0, d/D >= 0 with 1 − 2.4 (d/D)^0.27 > 0.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_khan_richardson(const S& archimedes,
-                                                                const std::type_identity_t<S>& wall_ratio = S(0)) {
-  using std::pow;
-  const S wall_factor = detail::khan_richardson_wall_factor(S(wall_ratio));
-  using T = value_type_of<S>;
-  FLUIDBED_EXPECTS(!(archimedes < S(0)) && !(wall_ratio < S(0)) && wall_factor > S(0));
-  return T(2.4L) + T(2.4L) / (1 + T(0.043L) * pow(archimedes, T(0.57L)) * wall_factor);
-}
+// a function of Ar (not of Re_t): its `argument` is "archimedes". Limits 4.8 (Ar → 0) and
+// 2.4 (Ar → ∞). The wall factor is positive only for d/D < (1/2.4)^(1/0.27) = 0.0391;
+// beyond, X < 0, n grows with Ar and has a pole at X = −1: the correlation has left its
+// data, and such d/D are out of domain. Parameter: d/D ∈ [0, 0.0391) (default 0).
+struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
+  static constexpr std::string_view argument = "archimedes";
+  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+
+  constexpr explicit KhanRichardsonExponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+
+  constexpr std::string_view name() const { return "KhanRichardsonExponent"; }
+  constexpr std::string_view reference() const {
+    return "Khan, A.R., Richardson, J.F. (1989) Chem. Eng. Commun. 78, 111-130";
+  }
+  constexpr Validity<2> validity() const {
+    return {{{"archimedes", 0.0, std::numeric_limits<double>::infinity()}, {"wall_ratio", 0.0, 0.0391}}};
+  }
+
+  // The wall factor 1 − 2.4 (d/D)^0.27.
+  template <class T>
+  FLUIDBED_HOST_DEVICE T wall_factor() const {
+    using std::pow;
+    return 1 - T(2.4L) * pow(T(wall_ratio), T(0.27L));
+  }
+
+  // d/D >= 0 with a positive wall factor, i.e. d/D < (1/2.4)^(1/0.27).
+  template <class T>
+  FLUIDBED_HOST_DEVICE Arguments<T, 1> parameter_domain() const {
+    using std::pow;
+    const T largest = pow(1 / T(2.4L), 1 / T(0.27L));
+    return {{{"wall_ratio", T(wall_ratio), domains::closed_open(T(0), largest),
+              "must be >= 0 and < (1/2.4)^(1/0.27) = 0.0391, where 1 - 2.4 (d/D)^0.27 > 0"}}};
+  }
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE S exponent(const S& archimedes) const {
+    using std::pow;
+    using T = value_type_of<S>;
+    return T(2.4L) + T(2.4L) / (1 + T(0.043L) * pow(archimedes, T(0.57L)) * wall_factor<T>());
+  }
+};
 
 // Garside, J., Al-Dibouni, M.R. (1977), "Velocity-voidage relationships for
 // fluidization and sedimentation in solid-liquid systems", Ind. Eng. Chem. Process Des.
@@ -158,42 +269,69 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_khan_richardson(const S& archime
 //
 //   (5.1 − n)/(n − 2.7) = 0.1 Re_t^0.9,   i.e. n = 2.7 + 2.4/(1 + 0.1 Re_t^0.9);
 //
-// limits 5.1 and 2.7. Precondition: Re_t >= 0.
-template <class S>
-FLUIDBED_HOST_DEVICE S richardson_zaki_exponent_garside_al_dibouni(const S& terminal_reynolds) {
-  using std::pow;
-  using T = value_type_of<S>;
-  FLUIDBED_EXPECTS(!(terminal_reynolds < S(0)));
-  return T(2.7L) + T(2.4L) / (1 + T(0.1L) * pow(terminal_reynolds, T(0.9L)));
-}
+// limits 5.1 and 2.7.
+struct GarsideAlDibouniExponent : RichardsonZakiExponent<GarsideAlDibouniExponent> {
+  static constexpr std::string_view argument = "terminal_reynolds";
+  constexpr std::string_view name() const { return "GarsideAlDibouniExponent"; }
+  constexpr std::string_view reference() const {
+    return "Garside, J., Al-Dibouni, M.R. (1977) Ind. Eng. Chem. Process Des. Dev. 16, 206-214, "
+           "doi:10.1021/i260062a008";
+  }
+  constexpr Validity<1> validity() const {
+    return {{{"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}}};
+  }
+
+  template <class S>
+  FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
+    using std::pow;
+    using T = value_type_of<S>;
+    return T(2.7L) + T(2.4L) / (1 + T(0.1L) * pow(terminal_reynolds, T(0.9L)));
+  }
+};
+
+struct RichardsonZakiExponentFamily {
+  static constexpr std::string_view what = "Richardson-Zaki exponent";
+};
+
+// The exponent correlations, each at d/D = 0; extend with `RichardsonZakiExponents::with<MyLaw>`.
+using RichardsonZakiExponents = Registry<RichardsonZakiExponentFamily, MazzeiExponent, RichardsonZaki1954Exponent,
+                                         RoweExponent, KhanRichardsonExponent, GarsideAlDibouniExponent>;
 
 // ----------------------------------------------------------------------------- the law
 
-// u_s = u_t ε^n (seed 000 eq. 3.22). Preconditions: u_t >= 0, ε ∈ (0, 1], n > 0.
-template <class S>
+// u_s = u_t ε^n (seed 000 eq. 3.22). Domain: u_t >= 0, ε ∈ (0, 1], n > 0.
+template <class S, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE S richardson_zaki_velocity(const S& terminal_velocity, const std::type_identity_t<S>& voidage,
-                                                const std::type_identity_t<S>& exponent) {
+                                                const std::type_identity_t<S>& exponent, Policy policy = {}) {
   using std::pow;
-  FLUIDBED_EXPECTS(voidage > S(0) && voidage <= S(1) && exponent > S(0));
+  using T = value_type_of<S>;
+  check_domain(policy, "richardson_zaki_velocity",
+               arguments(Argument<T>{"terminal_velocity", value_of(terminal_velocity), domains::non_negative<T>()},
+                         Argument<T>{"voidage", value_of(voidage), domains::half_open(T(0), T(1))},
+                         Argument<T>{"exponent", value_of(exponent), domains::positive<T>()}));
   return terminal_velocity * pow(voidage, exponent);
 }
 
-// ε = (u_s/u_t)^(1/n), the inverse of eq. 3.22. Preconditions: 0 < u_s <= u_t, n > 0
+// ε = (u_s/u_t)^(1/n), the inverse of eq. 3.22. Domain: u_t > 0, 0 < u_s <= u_t, n > 0
 // (u_s > u_t would give ε > 1: the particles are carried out, there is no bed).
-template <class S>
+template <class S, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE S richardson_zaki_voidage(const S& superficial_velocity,
                                                const std::type_identity_t<S>& terminal_velocity,
-                                               const std::type_identity_t<S>& exponent) {
+                                               const std::type_identity_t<S>& exponent, Policy policy = {}) {
   using std::pow;
-  FLUIDBED_EXPECTS(superficial_velocity > S(0) && superficial_velocity <= terminal_velocity && exponent > S(0));
+  using T = value_type_of<S>;
+  check_domain(
+      policy, "richardson_zaki_voidage",
+      arguments(Argument<T>{"terminal_velocity", value_of(terminal_velocity), domains::positive<T>()},
+                Argument<T>{"superficial_velocity", value_of(superficial_velocity),
+                            domains::half_open(T(0), T(value_of(terminal_velocity)))},
+                Argument<T>{"exponent", value_of(exponent), domains::positive<T>()}));
   return pow(superficial_velocity / terminal_velocity, 1 / exponent);
 }
 
-namespace detail {
-
 // The converged relation Re = Re_t ε^n(Re_t) of eq. 3.24: ln Re_t, y = 0.175 Re_t^¾ (so
 // n = 2.4 + 2.4/(1 + y)) and ln ε — all a per-cell caller (the Mazzei–Lettieri drag)
-// needs, with no further transcendental function.
+// needs, with no further transcendental function (also the elastic modulus's, elastic/).
 template <class T>
 struct TerminalReynoldsSolution {
   T log_terminal_reynolds, scaled_power, log_voidage;
@@ -223,7 +361,7 @@ struct TerminalReynoldsSolution {
 // fluidized bed's states, at most 4.
 // Preconditions: Re > 0, ε ∈ (0, 1], both finite.
 template <class T>
-FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T& reynolds, const T& voidage) {
+FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage) {
   using std::abs;
   using std::cbrt;
   using std::exp;
@@ -262,100 +400,24 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_terminal_reynolds(const T
   return {x, y, log_voidage};
 }
 
-}  // namespace detail
-
 // The terminal Reynolds number Re_t for which Richardson–Zaki with the exponent of
 // eq. 3.24 puts a bed fluidized at the superficial Reynolds number Re = ρ_f u_s d/μ_f at
 // the voidage ε:  Re = Re_t ε^n(Re_t)  (seed 000 §3.4.4.1, the procedure behind
 // Figs 3.1–3.5; the same relation defines Re* of eq. 3.53, the Mazzei–Lettieri drag's).
 // Re_t = Re at ε = 1 and Re_t = 0 at Re = 0; +∞ where Re_t exceeds the range of T (ln Re_t,
-// which the solver returns, is finite for every finite Re and ε). Preconditions: Re >= 0 finite,
-// ε ∈ (0, 1].
-template <class T>
-FLUIDBED_HOST_DEVICE T richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage) {
+// which solve_richardson_zaki_terminal_reynolds returns, is finite for every finite Re and ε).
+// Domain: Re >= 0, ε ∈ (0, 1]. With fluidbed::checked it also throws std::domain_error where
+// Re_t exceeds the range of T (e.g. Re = 1e300, ε = 1e-100).
+template <class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE T richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage, Policy policy = {}) {
   using std::exp;
-  FLUIDBED_EXPECTS(!(reynolds < T(0)) && voidage > T(0) && voidage <= T(1));
-  if (voidage == T(1) || reynolds == T(0)) return reynolds;
-  return exp(detail::solve_terminal_reynolds(reynolds, voidage).log_terminal_reynolds);
-}
-
-// ----------------------------------------------------------------------------- checked
-
-template <class T>
-T richardson_zaki_exponent_mazzei_checked(const T& terminal_reynolds) {
-  require_non_negative("richardson_zaki_exponent_mazzei", "terminal_reynolds", terminal_reynolds);
-  return richardson_zaki_exponent_mazzei(terminal_reynolds);
-}
-
-template <class T>
-T richardson_zaki_exponent_mazzei_derivative_checked(const T& terminal_reynolds) {
-  require_non_negative("richardson_zaki_exponent_mazzei_derivative", "terminal_reynolds", terminal_reynolds);
-  return richardson_zaki_exponent_mazzei_derivative(terminal_reynolds);
-}
-
-template <class T>
-T richardson_zaki_exponent_1954_checked(const T& terminal_reynolds, const std::type_identity_t<T>& wall_ratio = T(0)) {
-  require_non_negative("richardson_zaki_exponent_1954", "terminal_reynolds", terminal_reynolds);
-  require_in_closed_open("richardson_zaki_exponent_1954", "wall_ratio", wall_ratio, T(0), T(1));
-  return richardson_zaki_exponent_1954(terminal_reynolds, wall_ratio);
-}
-
-template <class T>
-T richardson_zaki_exponent_rowe_checked(const T& terminal_reynolds) {
-  require_non_negative("richardson_zaki_exponent_rowe", "terminal_reynolds", terminal_reynolds);
-  return richardson_zaki_exponent_rowe(terminal_reynolds);
-}
-
-template <class T>
-T richardson_zaki_exponent_khan_richardson_checked(const T& archimedes,
-                                                   const std::type_identity_t<T>& wall_ratio = T(0)) {
-  constexpr std::string_view function = "richardson_zaki_exponent_khan_richardson";
-  require_non_negative(function, "archimedes", archimedes);
-  require_non_negative(function, "wall_ratio", wall_ratio);
-  if (!(detail::khan_richardson_wall_factor(T(wall_ratio)) > T(0)))
-    fluidbed::detail::throw_domain_error(function, "wall_ratio", wall_ratio,
-                                         "must be < (1/2.4)^(1/0.27) = 0.0391, where 1 - 2.4 (d/D)^0.27 > 0");
-  return richardson_zaki_exponent_khan_richardson(archimedes, wall_ratio);
-}
-
-template <class T>
-T richardson_zaki_exponent_garside_al_dibouni_checked(const T& terminal_reynolds) {
-  require_non_negative("richardson_zaki_exponent_garside_al_dibouni", "terminal_reynolds", terminal_reynolds);
-  return richardson_zaki_exponent_garside_al_dibouni(terminal_reynolds);
-}
-
-template <class T>
-T richardson_zaki_velocity_checked(const T& terminal_velocity, const std::type_identity_t<T>& voidage,
-                                   const std::type_identity_t<T>& exponent) {
-  require_non_negative("richardson_zaki_velocity", "terminal_velocity", terminal_velocity);
-  require_in_half_open("richardson_zaki_velocity", "voidage", voidage, T(0), T(1));
-  require_positive("richardson_zaki_velocity", "exponent", exponent);
-  return richardson_zaki_velocity(terminal_velocity, voidage, exponent);
-}
-
-template <class T>
-T richardson_zaki_voidage_checked(const T& superficial_velocity, const std::type_identity_t<T>& terminal_velocity,
-                                  const std::type_identity_t<T>& exponent) {
-  require_positive("richardson_zaki_voidage", "terminal_velocity", terminal_velocity);
-  require_in_half_open("richardson_zaki_voidage", "superficial_velocity", superficial_velocity, T(0),
-                       terminal_velocity);
-  require_positive("richardson_zaki_voidage", "exponent", exponent);
-  return richardson_zaki_voidage(superficial_velocity, terminal_velocity, exponent);
-}
-
-// Also throws std::domain_error where Re_t exceeds the range of T (e.g. Re = 1e300, ε = 1e-100).
-template <class T>
-T richardson_zaki_terminal_reynolds_checked(const T& reynolds, const T& voidage) {
   constexpr std::string_view function = "richardson_zaki_terminal_reynolds";
-  require_non_negative(function, "reynolds", reynolds);
-  require_in_half_open(function, "voidage", voidage, T(0), T(1));
-  const T terminal_reynolds = richardson_zaki_terminal_reynolds(reynolds, voidage);
-  require_finite_result(function, "terminal_reynolds", terminal_reynolds, [&] {
-    std::ostringstream text;
-    text.precision(17);
-    text << "reynolds = " << reynolds << ", voidage = " << voidage;
-    return text.str();
-  });
+  const auto domain = arguments(Argument<T>{"reynolds", reynolds, domains::non_negative<T>()},
+                                Argument<T>{"voidage", voidage, domains::half_open(T(0), T(1))});
+  check_domain(policy, function, domain);
+  if (voidage == T(1) || reynolds == T(0)) return reynolds;
+  const T terminal_reynolds = exp(solve_richardson_zaki_terminal_reynolds(reynolds, voidage).log_terminal_reynolds);
+  check_result(policy, function, "terminal_reynolds", terminal_reynolds, [&] { return describe(domain); });
   return terminal_reynolds;
 }
 

@@ -1,0 +1,9 @@
+// fluidbed — homogeneous fluidization with any drag law: the equilibrium bed expansion and
+// its comparison with Richardson–Zaki, minimum fluidization (registry MinimumFluidizations),
+// and the Syamlal–O'Brien calibration from u_mf. Depends on drag/, settling/ and
+// single_particle/ (and Boost.Math).
+#pragma once
+
+#include "fluidization/bed_expansion.hpp"
+#include "fluidization/minimum_fluidization.hpp"
+#include "fluidization/syamlal_obrien_calibration.hpp"
