@@ -465,11 +465,11 @@ template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> elastic_force(const Vector3<T>& drag_force, const Vector3<T>& voidage_gradient,
                                               const T& sensitivity, const T& diameter, Policy policy = {}) {
   using std::sqrt;
-  interaction::detail::check_domain(policy, "elastic_force",
+  interaction::check_force_domain(policy, "elastic_force",
                                     arguments(Argument<T>{"sensitivity", sensitivity, domains::finite<T>()},
                                               Argument<T>{"diameter", diameter, domains::positive<T>()}),
-                                    interaction::detail::FiniteVector<T>{"drag_force", drag_force},
-                                    interaction::detail::FiniteVector<T>{"voidage_gradient", voidage_gradient});
+                                    interaction::FiniteVector<T>{"drag_force", drag_force},
+                                    interaction::FiniteVector<T>{"voidage_gradient", voidage_gradient});
   const T magnitude = sqrt(dot(drag_force, drag_force));
   if (!(magnitude > T(0))) return {T(0), T(0), T(0)};
   const T factor = -(T(2) / T(3)) * diameter * sensitivity * dot(voidage_gradient, drag_force) / magnitude;
@@ -485,12 +485,12 @@ FLUIDBED_HOST_DEVICE Vector3<T> elastic_force_vertical(const T& modulus, const V
                                                        const Vector3<T>& upward, Policy policy = {}) {
   using std::sqrt;
   const T unit = T(1), tolerance = T(1e-6);
-  interaction::detail::check_domain(
+  interaction::check_force_domain(
       policy, "elastic_force_vertical",
       arguments(Argument<T>{"modulus", modulus, domains::finite<T>()},
                 Argument<T>{"|upward|", sqrt(dot(upward, upward)), domains::closed(unit - tolerance, unit + tolerance)}),
-      interaction::detail::FiniteVector<T>{"voidage_gradient", voidage_gradient},
-      interaction::detail::FiniteVector<T>{"upward", upward});
+      interaction::FiniteVector<T>{"voidage_gradient", voidage_gradient},
+      interaction::FiniteVector<T>{"upward", upward});
   return scaled(modulus * dot(voidage_gradient, upward), upward);
 }
 

@@ -46,10 +46,10 @@ FLUIDBED_HOST_DEVICE constexpr Argument<T> property_argument(std::string_view na
 template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> classical_buoyancy(const T& solid_fraction, const T& fluid_density,
                                                    const Vector3<T>& gravity, Policy policy = {}) {
-  detail::check_domain(policy, "classical_buoyancy",
+  check_force_domain(policy, "classical_buoyancy",
                        arguments(detail::solid_fraction_argument(solid_fraction),
                                  detail::property_argument("fluid_density", fluid_density)),
-                       detail::FiniteVector<T>{"gravity", gravity});
+                       FiniteVector<T>{"gravity", gravity});
   return scaled(-solid_fraction * fluid_density, gravity);
 }
 
@@ -58,8 +58,8 @@ FLUIDBED_HOST_DEVICE Vector3<T> classical_buoyancy(const T& solid_fraction, cons
 template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> stress_buoyancy(const T& solid_fraction, const Vector3<T>& fluid_stress_divergence,
                                                 Policy policy = {}) {
-  detail::check_domain(policy, "stress_buoyancy", arguments(detail::solid_fraction_argument(solid_fraction)),
-                       detail::FiniteVector<T>{"fluid_stress_divergence", fluid_stress_divergence});
+  check_force_domain(policy, "stress_buoyancy", arguments(detail::solid_fraction_argument(solid_fraction)),
+                       FiniteVector<T>{"fluid_stress_divergence", fluid_stress_divergence});
   return scaled(solid_fraction, fluid_stress_divergence);
 }
 
@@ -67,8 +67,8 @@ FLUIDBED_HOST_DEVICE Vector3<T> stress_buoyancy(const T& solid_fraction, const V
 template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> pressure_gradient_buoyancy(const T& solid_fraction, const Vector3<T>& pressure_gradient,
                                                            Policy policy = {}) {
-  detail::check_domain(policy, "pressure_gradient_buoyancy", arguments(detail::solid_fraction_argument(solid_fraction)),
-                       detail::FiniteVector<T>{"pressure_gradient", pressure_gradient});
+  check_force_domain(policy, "pressure_gradient_buoyancy", arguments(detail::solid_fraction_argument(solid_fraction)),
+                       FiniteVector<T>{"pressure_gradient", pressure_gradient});
   return scaled(-solid_fraction, pressure_gradient);
 }
 
@@ -78,11 +78,11 @@ template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> homogeneous_buoyancy(const T& solid_fraction, const T& fluid_density,
                                                      const T& particle_density, const Vector3<T>& gravity,
                                                      Policy policy = {}) {
-  detail::check_domain(policy, "homogeneous_buoyancy",
+  check_force_domain(policy, "homogeneous_buoyancy",
                        arguments(detail::solid_fraction_argument(solid_fraction),
                                  detail::property_argument("fluid_density", fluid_density),
                                  detail::property_argument("particle_density", particle_density)),
-                       detail::FiniteVector<T>{"gravity", gravity});
+                       FiniteVector<T>{"gravity", gravity});
   const T suspension_density = (T(1) - solid_fraction) * fluid_density + solid_fraction * particle_density;
   return scaled(-solid_fraction * suspension_density, gravity);
 }
@@ -93,10 +93,10 @@ template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> local_fluid_acceleration_force(const T& solid_fraction, const T& fluid_density,
                                                                const Vector3<T>& fluid_acceleration,
                                                                Policy policy = {}) {
-  detail::check_domain(policy, "local_fluid_acceleration_force",
+  check_force_domain(policy, "local_fluid_acceleration_force",
                        arguments(detail::solid_fraction_argument(solid_fraction),
                                  detail::property_argument("fluid_density", fluid_density)),
-                       detail::FiniteVector<T>{"fluid_acceleration", fluid_acceleration});
+                       FiniteVector<T>{"fluid_acceleration", fluid_acceleration});
   return scaled(solid_fraction * fluid_density, fluid_acceleration);
 }
 

@@ -12,7 +12,7 @@
 #include "../core/errors.hpp"
 #include "../core/vector3.hpp"
 
-namespace fluidbed::interaction::detail {
+namespace fluidbed::interaction {
 
 // A vector argument: every component must be finite.
 template <class T>
@@ -26,10 +26,11 @@ struct FiniteVector {
   }
 };
 
-// The domain check of a call under `Policy` (core/errors.hpp): the vectors first (a length
-// computed from a vector is then finite), then the scalars.
+// The domain check of a force under `Policy` (core/errors.hpp), the vectors first (a length
+// computed from a vector is then finite), then the scalars: what fluidbed::check_domain is for
+// scalar arguments. Shared by the forces of interaction/ and elastic/.
 template <ErrorPolicy Policy, class T, std::size_t N, class... Vectors>
-constexpr void check_domain(Policy policy, std::string_view function, const Arguments<T, N>& scalars,
+constexpr void check_force_domain(Policy policy, std::string_view function, const Arguments<T, N>& scalars,
                             const Vectors&... vectors) {
   if constexpr (std::same_as<Policy, Checked>)
     (require_finite_elements(function, vectors.name, vectors.value), ...);
@@ -38,4 +39,4 @@ constexpr void check_domain(Policy policy, std::string_view function, const Argu
   fluidbed::check_domain(policy, function, scalars);
 }
 
-}  // namespace fluidbed::interaction::detail
+}  // namespace fluidbed::interaction

@@ -41,10 +41,10 @@ FLUIDBED_HOST_DEVICE Vector3<T> virtual_mass_force(const T& solid_fraction, cons
                                                    const Vector3<T>& particle_acceleration,
                                                    const T& coefficient = T(dilute_virtual_mass_coefficient),
                                                    Policy policy = {}) {
-  detail::check_domain(policy, "virtual_mass_force",
+  check_force_domain(policy, "virtual_mass_force",
                        detail::force_domain(solid_fraction, "fluid_density", fluid_density, coefficient),
-                       detail::FiniteVector<T>{"fluid_acceleration", fluid_acceleration},
-                       detail::FiniteVector<T>{"particle_acceleration", particle_acceleration});
+                       FiniteVector<T>{"fluid_acceleration", fluid_acceleration},
+                       FiniteVector<T>{"particle_acceleration", particle_acceleration});
   return scaled(coefficient * solid_fraction * fluid_density, difference(fluid_acceleration, particle_acceleration));
 }
 
@@ -53,10 +53,10 @@ template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> lift_force(const T& solid_fraction, const T& fluid_density,
                                            const Vector3<T>& fluid_vorticity, const Vector3<T>& slip_velocity,
                                            const T& coefficient = T(dilute_lift_coefficient), Policy policy = {}) {
-  detail::check_domain(policy, "lift_force",
+  check_force_domain(policy, "lift_force",
                        detail::force_domain(solid_fraction, "fluid_density", fluid_density, coefficient),
-                       detail::FiniteVector<T>{"fluid_vorticity", fluid_vorticity},
-                       detail::FiniteVector<T>{"slip_velocity", slip_velocity});
+                       FiniteVector<T>{"fluid_vorticity", fluid_vorticity},
+                       FiniteVector<T>{"slip_velocity", slip_velocity});
   return scaled(-coefficient * solid_fraction * fluid_density, cross(fluid_vorticity, slip_velocity));
 }
 
@@ -66,9 +66,9 @@ template <class T, ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE Vector3<T> faxen_force(const T& solid_fraction, const T& fluid_viscosity,
                                             const Vector3<T>& fluid_velocity_laplacian,
                                             const T& coefficient = T(dilute_faxen_coefficient), Policy policy = {}) {
-  detail::check_domain(policy, "faxen_force",
+  check_force_domain(policy, "faxen_force",
                        detail::force_domain(solid_fraction, "fluid_viscosity", fluid_viscosity, coefficient),
-                       detail::FiniteVector<T>{"fluid_velocity_laplacian", fluid_velocity_laplacian});
+                       FiniteVector<T>{"fluid_velocity_laplacian", fluid_velocity_laplacian});
   return scaled(coefficient * solid_fraction * fluid_viscosity, fluid_velocity_laplacian);
 }
 
