@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kinetic_theory_dispatch.hpp"
+#include "kinetic_theory_table_names.hpp"
 #include "reference_table.hpp"
 #include "same_arithmetic.hpp"
 

@@ -13,7 +13,7 @@
 #include <numbers>
 #include <string>
 
-#include "kinetic_theory_dispatch.hpp"
+#include "kinetic_theory_table_names.hpp"
 #include "reference_table.hpp"
 
 using namespace fluidbed;

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kinetic_theory_dispatch.hpp"
+#include "kinetic_theory_table_names.hpp"
 #include "reference_table.hpp"
 
 using namespace fluidbed;

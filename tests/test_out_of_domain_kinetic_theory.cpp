@@ -1,7 +1,7 @@
-// Out-of-domain input for every checked entry point of kinetic_theory/: evaluate_checked of
-// every radial distribution, closure, frictional law, gas-exchange source, mixture form and
-// the solid–solid drag, gas_damping_checked, the algebraic granular temperature and the
-// ConstitutiveSet (see test_out_of_domain.hpp for what each table entry checks). The laws'
+// Out-of-domain input for every checked entry point of kinetic_theory/: law.checked of every
+// radial distribution, closure, frictional law, gas-exchange source, mixture form and the
+// solid–solid drag, gas_damping and the algebraic granular temperature under fluidbed::checked,
+// and the ConstitutiveSet (see test_out_of_domain.hpp for what each table entry checks). The laws'
 // own parameters (packing limits, length scales, friction angles, …) are arguments too. In
 // float, double and long double (a law's parameters are double members in every type).
 #include <doctest/doctest.h>
@@ -76,7 +76,7 @@ template <class T, class Make>
 void check_closure(const std::string& label, const std::vector<ArgumentCase>& parameters, const Make& make) {
   check_entry_point<T>(
       label, concatenated(concatenated({solid_fraction, granular_temperature, g0}, material), parameters),
-      [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0], v[1], v[2], material_of(v, 3)); });
+      [&](const ValuesOf<T>& v) { return make(v).checked(v[0], v[1], v[2], material_of(v, 3)); });
 }
 
 // A one-class g0(φ) built by make(values), its parameters after φ.
@@ -84,7 +84,7 @@ template <class T, class Make>
 void check_radial_distribution(const std::string& label, const std::vector<ArgumentCase>& parameters, const Make& make) {
   const ArgumentCase phi{"solid_fraction", 0.3, outside_solid_fraction, {0.0, 0.7}};  // 0.7: beyond packing, continued
   check_entry_point<T>(label, concatenated({phi}, parameters),
-                       [&](const ValuesOf<T>& v) { return evaluate_checked(make(v), v[0]); });
+                       [&](const ValuesOf<T>& v) { return make(v).checked(v[0]); });
 }
 
 }  // namespace
@@ -129,7 +129,7 @@ TEST_CASE_TEMPLATE("out of domain: pressures, viscosities, conductivities and di
 TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLUIDBED_SCALAR_TYPES) {
   const ArgumentCase dense{"solid_fraction", 0.62, outside_solid_fraction, {0.0, 0.7}};
   check_entry_point<T>("JohnsonJacksonPressure", concatenated({dense}, johnson_jackson_parameters),
-                       [](const ValuesOf<T>& v) { return evaluate_checked(johnson_jackson_of(v, 1), v[0]); });
+                       [](const ValuesOf<T>& v) { return johnson_jackson_of(v, 1).checked(v[0]); });
   check_entry_point<T>(
       "SchaefferPressure",
       {dense,
@@ -137,13 +137,13 @@ TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLU
        {"coefficient", 1e24, negative, {0.0}},
        {"exponent", 10.0, negative, {0.0}}},
       [](const ValuesOf<T>& v) {
-        return evaluate_checked(SchaefferPressure{parameter(v, 1), parameter(v, 2), parameter(v, 3)}, v[0]);
+        return SchaefferPressure{parameter(v, 1), parameter(v, 2), parameter(v, 3)}.checked(v[0]);
       });
   check_entry_point<T>(
       "SchaefferViscosity",
       concatenated(concatenated({{"frictional_pressure", 100.0, negative, {0.0}}}, strain_rate), yield_parameters),
       [](const ValuesOf<T>& v) {
-        return evaluate_checked(SchaefferViscosity{parameter(v, 3), parameter(v, 4)}, v[0], rate_of(v, 1));
+        return SchaefferViscosity{parameter(v, 3), parameter(v, 4)}.checked(v[0], rate_of(v, 1));
       });
   const std::vector<ArgumentCase> srivastava_sundaresan = concatenated(
       concatenated(concatenated({dense, granular_temperature, {"diameter", 5e-4, not_positive}}, strain_rate),
@@ -151,14 +151,14 @@ TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLU
       yield_parameters);
   check_entry_point<T>("SrivastavaSundaresan", srivastava_sundaresan, [](const ValuesOf<T>& v) {
     const SrivastavaSundaresan law{johnson_jackson_of(v, 5), parameter(v, 11), parameter(v, 12)};
-    const FrictionalStress<T> stress = evaluate_checked(law, v[0], v[1], v[2], rate_of(v, 3));
+    const FrictionalStress<T> stress = law.checked(v[0], v[1], v[2], rate_of(v, 3));
     return stress.pressure + stress.viscosity;
   });
 }
 
 TEST_CASE_TEMPLATE("out of domain: exchange of granular energy with the gas", T, FLUIDBED_SCALAR_TYPES) {
   check_entry_point<T>("gas_damping", {{"beta", 10.0, negative, {0.0}}, granular_temperature},
-                       [](const ValuesOf<T>& v) { return gas_damping_checked(v[0], v[1]); });
+                       [](const ValuesOf<T>& v) { return gas_damping(v[0], v[1], fluidbed::checked); });
   check_entry_point<T>("KochSanganiSource",
                        concatenated({solid_fraction,
                                      granular_temperature,
@@ -167,8 +167,8 @@ TEST_CASE_TEMPLATE("out of domain: exchange of granular energy with the gas", T,
                                      {"gas_viscosity", 1.8e-5, not_positive}},
                                     concatenated(material, {temperature_floor})),
                        [](const ValuesOf<T>& v) {
-                         return evaluate_checked(KochSanganiSource{parameter(v, 8)}, v[0], v[1], v[2], v[3], v[4],
-                                                 material_of(v, 5));
+                         return KochSanganiSource{parameter(v, 8)}.checked(v[0], v[1], v[2], v[3], v[4],
+                                                                           material_of(v, 5));
                        });
   check_entry_point<T>("DragFluctuationSource",
                        concatenated({{"solid_fraction", 0.3, outside_open_unit},
@@ -177,8 +177,8 @@ TEST_CASE_TEMPLATE("out of domain: exchange of granular energy with the gas", T,
                                      {"slip", 0.5, negative, {0.0}}},
                                     concatenated(material, {temperature_floor})),
                        [](const ValuesOf<T>& v) {
-                         return evaluate_checked(DragFluctuationSource{parameter(v, 7)}, v[0], v[1], v[2], v[3],
-                                                 material_of(v, 4));
+                         return DragFluctuationSource{parameter(v, 7)}.checked(v[0], v[1], v[2], v[3],
+                                                                               material_of(v, 4));
                        });
 }
 
@@ -192,7 +192,7 @@ TEST_CASE_TEMPLATE("out of domain: mixture radial distributions, element by elem
   };
   const auto pair_value = [](const auto& law, const ValuesOf<T>& v) {
     const std::array<T, 2> fractions{v[0], v[1]}, diameters{v[2], v[3]};
-    return evaluate_checked(law, std::span<const T>(fractions), std::span<const T>(diameters), 0, 1);
+    return law.checked(std::span<const T>(fractions), std::span<const T>(diameters), 0, 1);
   };
   check_entry_point<T>("Lebowitz", classes, [&](const ValuesOf<T>& v) { return pair_value(Lebowitz{}, v); });
   check_entry_point<T>("Mansoori", classes, [&](const ValuesOf<T>& v) { return pair_value(Mansoori{}, v); });
@@ -203,7 +203,7 @@ TEST_CASE_TEMPLATE("out of domain: mixture radial distributions, element by elem
   const std::array<T, 2> diameters{T(1e-4L), T(2e-4L)};
   const auto message = [&](std::vector<T> fractions, std::size_t size, std::size_t i, std::size_t k) {
     return domain_error_message([&] {
-      evaluate_checked(Mansoori{}, std::span<const T>(fractions), std::span<const T>(diameters.data(), size), i, k);
+      Mansoori{}.checked(std::span<const T>(fractions), std::span<const T>(diameters.data(), size), i, k);
     });
   };
   CHECK(message({0.5, 0.5}, 2, 0, 1).find("'sum of fractions' = 1 ") != std::string::npos);
@@ -228,8 +228,8 @@ TEST_CASE_TEMPLATE("out of domain: solid-solid drag", T, FLUIDBED_SCALAR_TYPES) 
       {"friction_coefficient", 0.15, negative, {0.0}},
   };
   check_entry_point<T>("SyamlalSolidSolidDrag", arguments, [](const ValuesOf<T>& v) {
-    return evaluate_checked(SyamlalSolidSolidDrag{parameter(v, 9)}, v[0], v[1], Particles<T>{v[2], v[3]},
-                            Particles<T>{v[4], v[5]}, v[6], v[7], v[8]);
+    return SyamlalSolidSolidDrag{parameter(v, 9)}.checked(v[0], v[1], Particles<T>{v[2], v[3]},
+                                                          Particles<T>{v[4], v[5]}, v[6], v[7], v[8]);
   });
 }
 
@@ -240,13 +240,15 @@ TEST_CASE_TEMPLATE("out of domain: algebraic granular temperature, free and thro
       concatenated(concatenated({solid_fraction, g0}, material),
                    concatenated(strain_rate, {beta, {"length_scale", 0.05, not_positive}}));
   check_entry_point<T>("algebraic_granular_temperature", free, [](const ValuesOf<T>& v) {
-    return algebraic_granular_temperature_checked(LunPressure{}, HrenyaSinclairViscosity(v[8]), LunBulkViscosity{},
-                                                  LunDissipation{}, v[0], v[1], material_of(v, 2), rate_of(v, 5), v[7]);
+    return algebraic_granular_temperature(LunPressure{}, HrenyaSinclairViscosity(v[8]), LunBulkViscosity{},
+                                          LunDissipation{}, v[0], v[1], material_of(v, 2), rate_of(v, 5), v[7],
+                                          fluidbed::checked);
   });
   // No dissipation (e = 1) and compression: no finite Θ, reported instead of returned as +∞.
-  CHECK_THROWS_WITH_AS(algebraic_granular_temperature_checked(
-                           LunPressure{}, GidaspowViscosity{}, LunBulkViscosity{}, LunDissipation{}, T(0.3L), T(2),
-                           {T(5e-4L), T(2500), T(1)}, StrainRate<T>{T(-100), T(2)}, T(0)),
+  CHECK_THROWS_WITH_AS(algebraic_granular_temperature(LunPressure{}, GidaspowViscosity{}, LunBulkViscosity{},
+                                                      LunDissipation{}, T(0.3L), T(2),
+                                                      GranularMaterial<T>{T(5e-4L), T(2500), T(1)},
+                                                      StrainRate<T>{T(-100), T(2)}, T(0), fluidbed::checked),
                        doctest::Contains("'beta' = 0"), std::domain_error);
 
   const auto set_of = [](const ValuesOf<T>& v, std::size_t at) {
@@ -262,10 +264,11 @@ TEST_CASE_TEMPLATE("out of domain: algebraic granular temperature, free and thro
                                 c.conductivity + c.dissipation;
                        });
   check_entry_point<T>(
-      "ConstitutiveSet::algebraic_granular_temperature_checked",
+      "ConstitutiveSet::algebraic_granular_temperature, checked",
       concatenated(concatenated(concatenated({solid_fraction}, material), concatenated(strain_rate, {beta})),
                    set_parameters),
       [&](const ValuesOf<T>& v) {
-        return set_of(v, 7).algebraic_granular_temperature_checked(v[0], material_of(v, 1), rate_of(v, 4), v[6]);
+        return set_of(v, 7).algebraic_granular_temperature(v[0], material_of(v, 1), rate_of(v, 4), v[6],
+                                                           fluidbed::checked);
       });
 }

@@ -76,7 +76,7 @@ TEST_CASE("README kinetic-theory example: the Lun pressure and a finite equilibr
   const GranularMaterial<double> glass{.diameter = 279e-6, .density = 2480.0, .restitution = 0.9};
   const auto c = ktgf.with_derivatives(0.3, 0.01, glass);
   const double theta = ktgf.algebraic_granular_temperature(0.3, glass, StrainRate<double>{0.0, 50.0}, 0.0);
-  const double p_f = JohnsonJacksonPressure{.min_fraction = 0.61, .max_packing = 0.63}(0.62);
+  const double p_f = JohnsonJacksonPressure{0.61, 0.63}(0.62);
 
   // Lun et al. (1984), seed 001 eq. 21: ρ_s φ Θ [1 + 2(1 + e) φ g0] with Ogawa's g0 = 1/(1 − (φ/0.63)^(1/3))
   // (seed 001 eq. 24), evaluated by hand: 46.15050170899908 Pa.

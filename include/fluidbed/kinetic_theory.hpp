@@ -1,7 +1,8 @@
 // fluidbed — kinetic theory of granular flow: radial distribution functions (one class and
 // mixtures), granular pressure, shear and bulk viscosity, conductivity, dissipation, gas
 // exchange, friction, solid–solid drag, algebraic granular temperature, and the per-cell
-// ConstitutiveSet. Conventions: kinetic_theory/granular_state.hpp.
+// ConstitutiveSet, and one registry per kind of function (kinetic_theory/registry.hpp).
+// Conventions: kinetic_theory/granular_state.hpp.
 #pragma once
 
 #include "kinetic_theory/algebraic_temperature.hpp"
@@ -14,5 +15,6 @@
 #include "kinetic_theory/granular_state.hpp"
 #include "kinetic_theory/mixture_radial_distribution.hpp"
 #include "kinetic_theory/radial_distribution.hpp"
+#include "kinetic_theory/registry.hpp"
 #include "kinetic_theory/solid_solid_drag.hpp"
 #include "kinetic_theory/viscosity.hpp"

@@ -7,6 +7,7 @@
 
 #include "drag.hpp"
 #include "fluidization/minimum_fluidization.hpp"
+#include "kinetic_theory.hpp"
 #include "settling/richardson_zaki.hpp"
 #include "single_particle/drag_coefficient.hpp"
 #include "single_particle/terminal_velocity.hpp"
@@ -22,7 +23,12 @@ struct RegistryList {
   }
 };
 
-using Registries = RegistryList<single_particle::DragCoefficients, single_particle::TerminalVelocities,
-                                settling::RichardsonZakiExponents, fluidization::MinimumFluidizations, drag::DragLaws>;
+using Registries = RegistryList<
+    single_particle::DragCoefficients, single_particle::TerminalVelocities, settling::RichardsonZakiExponents,
+    fluidization::MinimumFluidizations, drag::DragLaws, kinetic_theory::RadialDistributions,
+    kinetic_theory::MixtureRadialDistributions, kinetic_theory::GranularPressures, kinetic_theory::ShearViscosities,
+    kinetic_theory::BulkViscosities, kinetic_theory::Conductivities, kinetic_theory::Dissipations,
+    kinetic_theory::FrictionalPressures, kinetic_theory::FrictionalViscosities, kinetic_theory::FrictionalStresses,
+    kinetic_theory::GasExchangeSources, kinetic_theory::SolidSolidDrags>;
 
 }  // namespace fluidbed

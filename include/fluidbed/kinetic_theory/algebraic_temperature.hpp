@@ -17,11 +17,12 @@
 // Preconditions (asserted in debug builds): as for the laws (φ ∈ [0, 1), g0 > 0, material
 // valid), D':D' ≥ 0, β ≥ 0; and B > 0 (e < 1, φ > 0) or b > 0 — with no dissipation and
 // b ≤ 0 (compression at e = 1, or φ = 0 without gas) there is no finite root and the result is
-// +∞ under shear. algebraic_granular_temperature_checked validates the arguments and the
-// laws' parameters and throws std::domain_error, also for that +∞.
+// +∞ under shear. With the error policy fluidbed::checked (last argument) the arguments and
+// the laws' parameters are validated and std::domain_error is thrown, also for that +∞.
 #pragma once
 
 #include <cmath>
+#include <concepts>
 #include <string_view>
 
 #include "granular_state.hpp"
@@ -31,15 +32,32 @@ namespace fluidbed::kinetic_theory {
 // Θ [m² s⁻²] from the four laws (each called as law(φ, Θ, g0, material)), the state,
 // the strain-rate invariants and the gas–particle drag coefficient β ≥ 0 (0 without gas).
 // Templated on the scalar: a Dual φ (with g0 from it), Dual invariants or a Dual β give
-// the sensitivities.
-template <class S, class T, class Pressure, class ShearViscosity, class BulkViscosity, class Dissipation>
+// the sensitivities. A relation, not a closure: the error policy picks the hot path
+// (fluidbed::unchecked, the default) or fluidbed::checked, which validates φ, g0 > 0, the
+// material, the strain-rate invariants, β ≥ 0 and the four laws' parameters, and that a
+// finite Θ exists, throwing std::domain_error naming the argument and its value
+// ("kinetic_theory::algebraic_granular_temperature").
+template <class S, class T, class Pressure, class ShearViscosity, class BulkViscosity, class Dissipation,
+          ErrorPolicy Policy = Unchecked>
 FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const Pressure& pressure, const ShearViscosity& shear_viscosity,
                                                       const BulkViscosity& bulk_viscosity,
                                                       const Dissipation& dissipation, const S& phi, const S& g0,
                                                       const GranularMaterial<T>& m, const StrainRate<S>& rate,
-                                                      const S& beta) {
+                                                      const S& beta, Policy policy = {}) {
   using std::sqrt;
-  FLUIDBED_EXPECTS(value_of(rate.deviatoric_contraction) >= 0 && value_of(beta) >= 0);
+  constexpr std::string_view function = "kinetic_theory::algebraic_granular_temperature";
+  check_domain(policy, function,
+               join(join(Arguments<T, 2>{detail::solid_fraction(value_of(phi)),
+                                         detail::radial_distribution_value(value_of(g0))},
+                         domain(m)),
+                    join(domain(detail::plain(rate)),
+                         Arguments<T, 1>{{{"beta", value_of(beta), domains::non_negative<T>()}}})));
+  if constexpr (std::same_as<Policy, Checked>) {
+    detail::require_parameters(function, pressure);
+    detail::require_parameters(function, shear_viscosity);
+    detail::require_parameters(function, bulk_viscosity);
+    detail::require_parameters(function, dissipation);
+  }
   const S unit(1);
   const S b = pressure(phi, unit, g0, m) * rate.divergence + 3 * beta;
   const S c = 2 * shear_viscosity(phi, unit, g0, m) * rate.deviatoric_contraction +
@@ -50,33 +68,12 @@ FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const Pressure& pressure, 
     x = c == 0 ? S(0) : 2 * c / (b + sqrt(b * b + 4 * B * c));
   else
     x = (sqrt(b * b + 4 * B * c) - b) / (2 * B);
-  return x * x;
-}
-
-// The checked entry point: validates φ, g0 > 0, the material, the strain-rate invariants,
-// β ≥ 0 and the four laws' parameters, and that a finite Θ exists, throwing std::domain_error
-// naming the argument and its value.
-template <class T, class Pressure, class ShearViscosity, class BulkViscosity, class Dissipation>
-T algebraic_granular_temperature_checked(const Pressure& pressure, const ShearViscosity& shear_viscosity,
-                                         const BulkViscosity& bulk_viscosity, const Dissipation& dissipation,
-                                         const T& phi, const T& g0, const GranularMaterial<T>& m,
-                                         const StrainRate<T>& rate, const T& beta) {
-  constexpr std::string_view function = "kinetic_theory::algebraic_granular_temperature";
-  validate_solid_fraction(function, phi);
-  require_positive(function, "g0", g0);
-  validate(function, m);
-  validate(function, rate);
-  require_non_negative(function, "beta", beta);
-  validate_parameters(function, pressure);
-  validate_parameters(function, shear_viscosity);
-  validate_parameters(function, bulk_viscosity);
-  validate_parameters(function, dissipation);
-  const T theta =
-      algebraic_granular_temperature(pressure, shear_viscosity, bulk_viscosity, dissipation, phi, g0, m, rate, beta);
-  if (!fluidbed::detail::is_finite_number(theta))
-    fluidbed::detail::throw_domain_error(function, "beta", beta,
-                                         "no finite granular temperature: without collisional dissipation (e = 1 or "
-                                         "phi = 0) the production needs the sink 3 beta + (p_s/Theta) div u > 0");
+  const S theta = x * x;
+  if constexpr (std::same_as<Policy, Checked>)
+    if (!fluidbed::detail::is_finite_number(value_of(theta)))
+      fluidbed::detail::throw_domain_error(function, "beta", value_of(beta),
+                                           "no finite granular temperature: without collisional dissipation (e = 1 or "
+                                           "phi = 0) the production needs the sink 3 beta + (p_s/Theta) div u > 0");
   return theta;
 }
 

@@ -1,13 +1,16 @@
 // fluidbed — granular conductivity κ_s [kg m⁻¹ s⁻¹] (the flux of granular energy is
 // −κ_s ∇Θ), per unit volume of suspension in every seed.
 //
-// Shape: law(φ, Θ, g0, material) → κ ≥ 0 = law.kinetic(...) + law.collisional(...),
-// templated on the scalar. Every form is ∝ √Θ (∂κ/∂Θ = κ/(2Θ), +∞ at Θ = 0).
-// Preconditions (asserted in debug builds): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in
-// granular_state.hpp; HrenyaSinclairConductivity also length_scale > 0.
-// evaluate_checked(law, φ, Θ, g0, material) validates them and throws std::domain_error.
+// Shape: ConstitutiveLaw (granular_state.hpp), law(φ, Θ, g0, material) → κ ≥ 0 =
+// law.kinetic(...) + law.collisional(...), templated on the scalar, with
+// law.with_derivatives(φ, Θ, rdf, material) and the checked entry points. Every form is ∝ √Θ
+// (∂κ/∂Θ = κ/(2Θ), +∞ at Θ = 0). Preconditions (asserted in debug builds; the checked entry
+// points throw std::domain_error): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in
+// granular_state.hpp; HrenyaSinclairConductivity also length_scale > 0. Validity: dense-gas
+// kinetic theory, no fitted range (granular_state.hpp's dense_gas_validity).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -28,8 +31,9 @@ using WithGidaspowCollisionalConductivity = KineticPlusCollisional<Law, 2, 1>;
 //   κ_kin = 150 ρ_s d √(πΘ) / (384 (1 + e) g0) · [1 + (6/5) φ g0 (1 + e)]²
 // (= 2κ_dil/((1 + e) g0)[…]², κ_dil = (75/384) ρ_s d √(πΘ)). → 2κ_dil/(1 + e) as φ → 0.
 struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConductivity> {
-  constexpr std::string_view name() const { return "Gidaspow"; }
+  constexpr std::string_view name() const { return "GidaspowConductivity"; }
   constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -45,8 +49,9 @@ struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConduc
 //                                            + (16/(15π)) (41 − 33η) η φ g0],
 // whose last term is the collisional conductivity; kinetic = the rest. → 0 as φ → 0.
 struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConductivity> {
-  constexpr std::string_view name() const { return "Syamlal"; }
+  constexpr std::string_view name() const { return "SyamlalConductivity"; }
   constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -62,17 +67,22 @@ struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConducti
 //   κ_kin = ρ_s d √Θ [ (9/32) √π g0 (1+e)² (2e−1) φ²/D
 //                     + (15/16) √π φ (e²/2 + e/4 − 3/4 + λ)/(D λ)
 //                     + (25/64) √π / ((1+e) D λ g0) ].
+// Registered with L = 0.05 m, as the viscosity.
 struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSinclairConductivity> {
   double length_scale;  // L [m]
 
   constexpr explicit HrenyaSinclairConductivity(double length) : length_scale(length) {}
-  constexpr std::string_view name() const { return "HrenyaSinclair"; }
+  static constexpr std::array<HrenyaSinclairConductivity, 1> registered() {
+    return {HrenyaSinclairConductivity(detail::registered_length_scale)};
+  }
+  constexpr std::string_view name() const { return "HrenyaSinclairConductivity"; }
   constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
-  void validate(std::string_view function) const { require_positive(function, "length_scale", length_scale); }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
+  constexpr Arguments<double, 1> parameter_domain() const { return detail::length_scale_domain(length_scale); }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
-    FLUIDBED_EXPECTS(length_scale > 0);
+    FLUIDBED_EXPECTS(detail::parameters_within(*this));
     const T e = m.restitution, d_factor = T(49) / 16 - T(33) / 16 * e;
     const T sqrt_pi = numbers::sqrt_pi<T>();
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);

@@ -11,6 +11,7 @@
 // and are added by the host.
 #pragma once
 
+#include <concepts>
 #include <string_view>
 
 #include "algebraic_temperature.hpp"
@@ -40,11 +41,18 @@ struct ConstitutiveSet {
   BulkViscosity bulk_viscosity{};
   Dissipation dissipation{};
 
-  // Hot path. Preconditions: φ ∈ [0, 1), Θ ≥ 0, material valid (granular_state.hpp).
+  // φ ∈ [0, 1), Θ ≥ 0, material as domain(GranularMaterial).
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 5> argument_domain(const T& phi, const T& theta,
+                                                                          const GranularMaterial<T>& m) {
+    return join(Arguments<T, 2>{detail::solid_fraction(phi), detail::granular_temperature(theta)}, domain(m));
+  }
+
+  // Hot path. Preconditions (asserted in debug builds): argument_domain, and each law's.
   template <class S, class T>
   FLUIDBED_HOST_DEVICE ConstitutiveValues<S> operator()(const S& phi, const S& theta,
                                                         const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(value_of(phi) >= 0 && value_of(phi) < 1 && value_of(theta) >= 0);
+    FLUIDBED_EXPECTS(within(argument_domain(value_of(phi), value_of(theta), m)));
     const S g0 = radial_distribution(phi);
     return {g0,
             pressure(phi, theta, g0, m),
@@ -69,28 +77,23 @@ struct ConstitutiveSet {
   // argument and its value), then evaluates.
   template <class T>
   ConstitutiveValues<T> checked(const T& phi, const T& theta, const GranularMaterial<T>& m) const {
-    validate_state(checked_function, phi, theta);
-    validate(checked_function, m);
-    validate_laws();
+    require_within(checked_function, argument_domain(phi, theta, m));
+    require_laws_parameters();
     return (*this)(phi, theta, m);
   }
 
-  // The local-equilibrium Θ with these laws (algebraic_temperature.hpp).
-  template <class S, class T>
+  // The local-equilibrium Θ with these laws (algebraic_temperature.hpp); with fluidbed::checked
+  // also φ (before g0(φ) is evaluated) and every law's parameters are validated.
+  template <class S, class T, ErrorPolicy Policy = Unchecked>
   FLUIDBED_HOST_DEVICE S algebraic_granular_temperature(const S& phi, const GranularMaterial<T>& m,
-                                                        const StrainRate<S>& rate, const S& beta) const {
+                                                        const StrainRate<S>& rate, const S& beta,
+                                                        Policy policy = {}) const {
+    if constexpr (std::same_as<Policy, Checked>) {
+      require_within(checked_function, Arguments<T, 1>{detail::solid_fraction(value_of(phi))});
+      require_laws_parameters();
+    }
     return kinetic_theory::algebraic_granular_temperature(pressure, shear_viscosity, bulk_viscosity, dissipation, phi,
-                                                          radial_distribution(phi), m, rate, beta);
-  }
-
-  // The same, validated (algebraic_granular_temperature_checked).
-  template <class T>
-  T algebraic_granular_temperature_checked(const T& phi, const GranularMaterial<T>& m, const StrainRate<T>& rate,
-                                           const T& beta) const {
-    validate_solid_fraction(checked_function, phi);  // before g0(φ) is evaluated
-    validate_laws();
-    return kinetic_theory::algebraic_granular_temperature_checked(
-        pressure, shear_viscosity, bulk_viscosity, dissipation, phi, radial_distribution(phi), m, rate, beta);
+                                                          radial_distribution(phi), m, rate, beta, policy);
   }
 
   template <class T>
@@ -107,13 +110,13 @@ struct ConstitutiveSet {
  private:
   static constexpr std::string_view checked_function = "kinetic_theory::ConstitutiveSet";
 
-  void validate_laws() const {
-    validate_parameters(checked_function, radial_distribution);
-    validate_parameters(checked_function, pressure);
-    validate_parameters(checked_function, shear_viscosity);
-    validate_parameters(checked_function, conductivity);
-    validate_parameters(checked_function, bulk_viscosity);
-    validate_parameters(checked_function, dissipation);
+  void require_laws_parameters() const {
+    detail::require_parameters(checked_function, radial_distribution);
+    detail::require_parameters(checked_function, pressure);
+    detail::require_parameters(checked_function, shear_viscosity);
+    detail::require_parameters(checked_function, conductivity);
+    detail::require_parameters(checked_function, bulk_viscosity);
+    detail::require_parameters(checked_function, dissipation);
   }
 };
 

@@ -6,15 +6,17 @@
 //
 // Frictional pressures are 0 below the onset fraction φ_min and grow steeply towards
 // packing. Frictional viscosities divide by a strain rate: each law documents its floor.
-// The friction angle is in radians. Preconditions (asserted in debug builds): φ ∈ [0, 1),
-// Θ ≥ 0, d > 0, p_f ≥ 0, D':D' ≥ 0, 0 <= φ_min < φ_max <= 1, 0 < packing_margin < φ_max,
-// friction angle in (0, π/2), strain-rate floor > 0, coefficients and exponents ≥ 0.
-// evaluate_checked(law, args…) validates them and throws std::domain_error.
+// The friction angle is in radians. Preconditions (asserted in debug builds; law.checked(…)
+// throws std::domain_error): φ ∈ [0, 1), Θ ≥ 0, d > 0, p_f ≥ 0, ∇·u finite, D':D' ≥ 0,
+// 0 <= φ_min < φ_max <= 1, 0 < packing_margin < φ_max, friction angle in (0, π/2), strain-rate
+// floor > 0, coefficients and exponents ≥ 0. The pressures have the shape g(φ)
+// (SolidFractionLaw, granular_state.hpp); the viscosity and the Srivastava–Sundaresan stress
+// their own, with with_derivatives members.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <numbers>
-#include <string>
 #include <string_view>
 
 #include "../core/constants.hpp"
@@ -29,13 +31,9 @@ namespace detail {
 
 // The parameters the frictional viscosities share: φ_f ∈ (0, π/2) and s > 0 (with s = 0 the
 // viscosity is infinite, or 0/0, at rest).
-FLUIDBED_HOST_DEVICE constexpr bool valid_yield_parameters(double friction_angle, double strain_rate_floor) {
-  return friction_angle > 0 && friction_angle < std::numbers::pi / 2 && strain_rate_floor > 0;
-}
-
-inline void validate_yield_parameters(std::string_view function, double friction_angle, double strain_rate_floor) {
-  require_in_open(function, "friction_angle", friction_angle, 0.0, std::numbers::pi / 2);
-  require_positive(function, "strain_rate_floor", strain_rate_floor);
+FLUIDBED_HOST_DEVICE constexpr Arguments<double, 2> yield_domain(double friction_angle, double strain_rate_floor) {
+  return {{{"friction_angle", friction_angle, domains::open(0.0, std::numbers::pi / 2)},
+           {"strain_rate_floor", strain_rate_floor, domains::positive<double>()}}};
 }
 
 }  // namespace detail
@@ -51,8 +49,9 @@ inline void validate_yield_parameters(std::string_view function, double friction
 // Seed 001's letters (…)^n/(…)^p and seed 004's (…)^p/(…)^n are swapped; both mean
 // a = 2 (numerator), b = 5 (denominator). Defaults: Fr = 0.05 Pa, a = 2, b = 5 (OpenFOAM
 // tutorials, MFiX); seed 004 uses Fr = 0.005 (unit not printed; Pa assumed), φ_min
-// 0.55–0.6, φ_max = 0.64.
-struct JohnsonJacksonPressure {
+// 0.55–0.6, φ_max = 0.64. Registered with seed 001's Table 1, φ_min = 0.61, φ_max = 0.63.
+// Validity: φ_min to φ_max (dense, enduring contacts).
+struct JohnsonJacksonPressure : SolidFractionLaw<JohnsonJacksonPressure> {
   double min_fraction;                // φ_min, onset of friction
   double max_packing;                 // φ_max
   double coefficient = 0.05;          // Fr [Pa]
@@ -60,23 +59,33 @@ struct JohnsonJacksonPressure {
   double denominator_exponent = 5.0;  // b
   double packing_margin = 0.01;
 
-  constexpr std::string_view name() const { return "JohnsonJackson"; }
+  constexpr JohnsonJacksonPressure(double min_fraction_, double max_packing_, double coefficient_ = 0.05,
+                                   double numerator_exponent_ = 2.0, double denominator_exponent_ = 5.0,
+                                   double packing_margin_ = 0.01)
+      : min_fraction(min_fraction_),
+        max_packing(max_packing_),
+        coefficient(coefficient_),
+        numerator_exponent(numerator_exponent_),
+        denominator_exponent(denominator_exponent_),
+        packing_margin(packing_margin_) {}
+  static constexpr std::array<JohnsonJacksonPressure, 1> registered() { return {JohnsonJacksonPressure{0.61, 0.63}}; }
+  constexpr std::string_view name() const { return "JohnsonJacksonPressure"; }
   constexpr std::string_view reference() const {
     return "Johnson, P.C. & Jackson, R. (1987) J. Fluid Mech. 176, 67-93; Johnson, P.C., Nott, P. & Jackson, R. "
            "(1990) J. Fluid Mech. 210, 501-535";
   }
-  void validate(std::string_view function) const {
-    detail::validate_packing(function, max_packing, packing_margin);
-    require_in_closed_open(function, "min_fraction", min_fraction, 0.0, max_packing);
-    require_non_negative(function, "coefficient", coefficient);
-    require_non_negative(function, "numerator_exponent", numerator_exponent);
-    require_non_negative(function, "denominator_exponent", denominator_exponent);
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", min_fraction, max_packing}}}; }
+  constexpr Arguments<double, 6> parameter_domain() const {
+    constexpr Interval<double> non_negative = domains::non_negative<double>();
+    return join(detail::packing_domain(max_packing, packing_margin),
+                Arguments<double, 4>{{{"min_fraction", min_fraction, domains::closed_open(0.0, max_packing)},
+                                      {"coefficient", coefficient, non_negative},
+                                      {"numerator_exponent", numerator_exponent, non_negative},
+                                      {"denominator_exponent", denominator_exponent, non_negative}}});
   }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin) &&
-                     min_fraction >= 0 && min_fraction < max_packing);
     using T = value_type_of<S>;
     const T onset = T(min_fraction), packing = T(max_packing);
     if (!(phi > onset)) return S(0);
@@ -90,28 +99,41 @@ struct JohnsonJacksonPressure {
 // Schaeffer (1987), J. Differential Equations 66, 19–50, doi:10.1016/0022-0396(87)90038-6,
 // as in MFiX and OpenFOAM: p_f = A (φ − φ_min)^n for φ > φ_min, 0 otherwise, with
 // A = 10²⁴ Pa (10²⁵ barye in MFiX's CGS) and n = 10. Finite at every φ (no packing
-// singularity): it is a penalty that keeps φ near φ_min.
-struct SchaefferPressure {
+// singularity): it is a penalty that keeps φ near φ_min. Registered with φ_min = 0.5
+// (OpenFOAM's alphaMinFriction in its tutorials). Validity: φ above φ_min, no stated bound.
+struct SchaefferPressure : SolidFractionLaw<SchaefferPressure> {
   double min_fraction;        // φ_min
   double coefficient = 1e24;  // A [Pa]
   double exponent = 10.0;     // n
 
-  constexpr std::string_view name() const { return "Schaeffer"; }
+  constexpr explicit SchaefferPressure(double min_fraction_, double coefficient_ = 1e24, double exponent_ = 10.0)
+      : min_fraction(min_fraction_), coefficient(coefficient_), exponent(exponent_) {}
+  static constexpr std::array<SchaefferPressure, 1> registered() { return {SchaefferPressure{0.5}}; }
+  constexpr std::string_view name() const { return "SchaefferPressure"; }
   constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
-  void validate(std::string_view function) const {
-    require_in_closed_open(function, "min_fraction", min_fraction, 0.0, 1.0);
-    require_non_negative(function, "coefficient", coefficient);
-    require_non_negative(function, "exponent", exponent);
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", min_fraction, 1.0}}}; }
+  constexpr Arguments<double, 3> parameter_domain() const {
+    return {{{"min_fraction", min_fraction, domains::closed_open(0.0, 1.0)},
+             {"coefficient", coefficient, domains::non_negative<double>()},
+             {"exponent", exponent, domains::non_negative<double>()}}};
   }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && min_fraction >= 0 && min_fraction < 1);
     using T = value_type_of<S>;
     const T onset = T(min_fraction);
     if (!(phi > onset)) return S(0);
     return T(coefficient) * pow(phi - onset, T(exponent));
   }
+};
+
+// μ_f of SchaefferViscosity with its partial derivatives in its arguments.
+template <class T>
+struct SchaefferViscosityDerivatives {
+  T value;
+  T d_frictional_pressure;
+  T d_divergence;  // 0
+  T d_deviatoric_contraction;
 };
 
 // Schaeffer's (1987) frictional viscosity, the Coulomb yield condition written as a
@@ -121,21 +143,51 @@ struct SchaefferPressure {
 // caps μ_f at 100 Pa s). In simple shear √I_2D = γ̇/2, so the shear stress is p_f sin φ_f.
 // Seed 001 eq. 37 (μ = p sin φ, "Johnson–Jackson") lacks the 1/strain rate: it is a stress.
 // Seed 004's I_2 is not said to be deviatoric; with D:D instead of D':D' μ_f changes.
-struct SchaefferViscosity {
+// Registered with seed 001's φ_f = 30°. Validity: none stated (a yield condition, Validity<0>).
+struct SchaefferViscosity : KineticTheoryLaw<SchaefferViscosity> {
   double friction_angle;                                 // φ_f [rad]
   double strain_rate_floor = default_strain_rate_floor;  // s [s⁻¹]
 
-  constexpr std::string_view name() const { return "Schaeffer"; }
-  constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
-  void validate(std::string_view function) const {
-    detail::validate_yield_parameters(function, friction_angle, strain_rate_floor);
+  constexpr explicit SchaefferViscosity(double friction_angle_, double strain_rate_floor_ = default_strain_rate_floor)
+      : friction_angle(friction_angle_), strain_rate_floor(strain_rate_floor_) {}
+  static constexpr std::array<SchaefferViscosity, 1> registered() {
+    return {SchaefferViscosity{std::numbers::pi / 6}};
   }
+  constexpr std::string_view name() const { return "SchaefferViscosity"; }
+  constexpr std::string_view reference() const { return detail::references::schaeffer_1987; }
+  constexpr Validity<0> validity() const { return {}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::yield_domain(friction_angle, strain_rate_floor);
+  }
+  // p_f ≥ 0, the strain rate as domain(StrainRate).
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 3> argument_domain(const T& frictional_pressure,
+                                                                          const StrainRate<T>& rate) {
+    return join(Arguments<T, 1>{{{"frictional_pressure", frictional_pressure, domains::non_negative<T>()}}},
+                kinetic_theory::domain(rate));
+  }
+
+  // μ_f with ∂/∂p_f, ∂/∂(∇·u) (0: μ_f does not depend on it) and ∂/∂(D':D'); for ∂μ_f/∂φ pass
+  // p_f as a Dual to the hot path.
+  template <class T>
+  FLUIDBED_HOST_DEVICE SchaefferViscosityDerivatives<T> with_derivatives(const T& frictional_pressure,
+                                                                         const StrainRate<T>& rate) const {
+    using D = Dual<T, 3>;
+    const D mu = (*this)(D::variable(frictional_pressure, 0),
+                         StrainRate<D>{D::variable(rate.divergence, 1), D::variable(rate.deviatoric_contraction, 2)});
+    return {mu.value, mu.derivative[0], mu.derivative[1], mu.derivative[2]};
+  }
+  template <class T>
+  SchaefferViscosityDerivatives<T> checked_with_derivatives(const T& frictional_pressure,
+                                                            const StrainRate<T>& rate) const {
+    require_valid(frictional_pressure, rate);
+    return with_derivatives(frictional_pressure, rate);
+  }
+
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& frictional_pressure, const StrainRate<S>& rate) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& frictional_pressure, const StrainRate<S>& rate) const {
     using std::sin;
     using std::sqrt;
-    FLUIDBED_EXPECTS(value_of(frictional_pressure) >= 0 && value_of(rate.deviatoric_contraction) >= 0 &&
-                     detail::valid_yield_parameters(friction_angle, strain_rate_floor));
     using T = value_type_of<S>;
     const T floor = T(strain_rate_floor);
     const S invariant = T(0.5) * rate.deviatoric_contraction + floor * floor;
@@ -149,6 +201,16 @@ struct FrictionalStress {
   S viscosity;  // μ_f [Pa s]
 };
 
+// A frictional pressure or viscosity with its partial derivatives in the state (φ, Θ, ∇·u, D':D').
+template <class T>
+struct FrictionDerivatives {
+  T value;
+  T d_solid_fraction;
+  T d_granular_temperature;
+  T d_divergence;
+  T d_deviatoric_contraction;
+};
+
 // Srivastava & Sundaresan (2003), Powder Technol. 129, 72–85,
 // doi:10.1016/S0032-5910(02)00132-8 (MFiX PRINCETON, SedFoam): the critical-state pressure
 // P_c (Johnson–Jackson form) modified by dilatation, with the granular temperature
@@ -158,28 +220,67 @@ struct FrictionalStress {
 //   p_f = P_c r^(n−1),   μ_f = max(0, √2 p_f sin φ_f (n − (n − 1) r)/(2ζ)).
 // (p_f/P_c)^(1/(n−1)) = r is used directly. At ∇·u = 0 both branches give p_f = P_c and
 // μ_f = √2 P_c sin φ_f/(2ζ); s (default 10⁻⁶ s⁻¹) keeps ζ > 0 at rest with Θ = 0.
-struct SrivastavaSundaresan {
+// Registered with P_c = JohnsonJacksonPressure{0.5, 0.63} and φ_f = 28.5° (MFiX's PRINCETON
+// tutorials). Validity: none stated (Validity<0>).
+struct SrivastavaSundaresan : KineticTheoryLaw<SrivastavaSundaresan> {
   JohnsonJacksonPressure critical_state_pressure;  // P_c(φ)
   double friction_angle;                           // φ_f [rad]
   double strain_rate_floor = default_strain_rate_floor;
 
+  constexpr SrivastavaSundaresan(const JohnsonJacksonPressure& critical_state_pressure_, double friction_angle_,
+                                 double strain_rate_floor_ = default_strain_rate_floor)
+      : critical_state_pressure(critical_state_pressure_),
+        friction_angle(friction_angle_),
+        strain_rate_floor(strain_rate_floor_) {}
+  static constexpr std::array<SrivastavaSundaresan, 1> registered() {
+    return {SrivastavaSundaresan{JohnsonJacksonPressure{0.5, 0.63}, 28.5 * std::numbers::pi / 180}};
+  }
   constexpr std::string_view name() const { return "SrivastavaSundaresan"; }
   constexpr std::string_view reference() const {
     return "Srivastava, A. & Sundaresan, S. (2003) Powder Technol. 129, 72-85, doi:10.1016/S0032-5910(02)00132-8";
   }
-  void validate(std::string_view function) const {
-    critical_state_pressure.validate(function);
-    detail::validate_yield_parameters(function, friction_angle, strain_rate_floor);
+  constexpr Validity<0> validity() const { return {}; }
+  constexpr Arguments<double, 8> parameter_domain() const {
+    return join(critical_state_pressure.parameter_domain(), detail::yield_domain(friction_angle, strain_rate_floor));
   }
+  // φ ∈ [0, 1), Θ ≥ 0, d > 0, the strain rate as domain(StrainRate).
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 5> argument_domain(const T& phi, const T& theta,
+                                                                          const T& diameter,
+                                                                          const StrainRate<T>& rate) {
+    return join(Arguments<T, 3>{detail::solid_fraction(phi), detail::granular_temperature(theta),
+                                {"diameter", diameter, domains::positive<T>()}},
+                kinetic_theory::domain(rate));
+  }
+
+  // p_f and μ_f, each with ∂/∂φ, ∂/∂Θ, ∂/∂(∇·u) and ∂/∂(D':D').
+  template <class T>
+  FLUIDBED_HOST_DEVICE FrictionalStress<FrictionDerivatives<T>> with_derivatives(const T& phi, const T& theta,
+                                                                                 const T& diameter,
+                                                                                 const StrainRate<T>& rate) const {
+    using D = Dual<T, 4>;
+    const FrictionalStress<D> stress =
+        (*this)(D::variable(phi, 0), D::variable(theta, 1), diameter,
+                StrainRate<D>{D::variable(rate.divergence, 2), D::variable(rate.deviatoric_contraction, 3)});
+    const auto split = [](const D& x) {
+      return FrictionDerivatives<T>{x.value, x.derivative[0], x.derivative[1], x.derivative[2], x.derivative[3]};
+    };
+    return {split(stress.pressure), split(stress.viscosity)};
+  }
+  template <class T>
+  FrictionalStress<FrictionDerivatives<T>> checked_with_derivatives(const T& phi, const T& theta, const T& diameter,
+                                                                    const StrainRate<T>& rate) const {
+    require_valid(phi, theta, diameter, rate);
+    return with_derivatives(phi, theta, diameter, rate);
+  }
+
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE FrictionalStress<S> operator()(const S& phi, const S& theta, const T& diameter,
-                                                      const StrainRate<S>& rate) const {
+  FLUIDBED_HOST_DEVICE FrictionalStress<S> kernel(const S& phi, const S& theta, const T& diameter,
+                                                  const StrainRate<S>& rate) const {
     using std::pow;
     using std::sin;
     using std::sqrt;
-    FLUIDBED_EXPECTS(value_of(theta) >= 0 && diameter > T(0) && value_of(rate.deviatoric_contraction) >= 0 &&
-                     detail::valid_yield_parameters(friction_angle, strain_rate_floor));
-    const S critical = critical_state_pressure(phi);
+    const S critical = critical_state_pressure.kernel(phi);
     const T sin_angle = sin(T(friction_angle)), floor = T(strain_rate_floor), sqrt2 = numbers::sqrt2<T>();
     const S zeta = sqrt(rate.deviatoric_contraction + theta / (diameter * diameter) + floor * floor);
     const T n = rate.divergence >= 0 ? numbers::sqrt3<T>() / (2 * sin_angle) : T(1.03L);
@@ -191,28 +292,5 @@ struct SrivastavaSundaresan {
     return {pressure, viscosity};
   }
 };
-
-// Checked entry points of the frictional viscosities (the pressures: evaluate_checked(law, φ),
-// granular_state.hpp): validate the arguments and the law's parameters, throwing
-// std::domain_error naming the argument and its value, then evaluate.
-template <class T>
-T evaluate_checked(const SchaefferViscosity& law, const T& frictional_pressure, const StrainRate<T>& rate) {
-  const std::string function = detail::checked_function_name(law);
-  require_non_negative(function, "frictional_pressure", frictional_pressure);
-  validate(function, rate);
-  law.validate(function);
-  return law(frictional_pressure, rate);
-}
-
-template <class T>
-FrictionalStress<T> evaluate_checked(const SrivastavaSundaresan& law, const T& phi, const T& theta, const T& diameter,
-                                     const StrainRate<T>& rate) {
-  const std::string function = detail::checked_function_name(law);
-  validate_state(function, phi, theta);
-  require_positive(function, "diameter", diameter);
-  validate(function, rate);
-  law.validate(function);
-  return law(phi, theta, diameter, rate);
-}
 
 }  // namespace fluidbed::kinetic_theory

@@ -1,11 +1,12 @@
 // fluidbed — granular (solids) pressure p_s [Pa], per unit volume of suspension.
 //
-// Shape: law(φ, Θ, g0, material) → p_s ≥ 0, templated on the scalar (Dual φ, Θ and a
-// g0 computed from the Dual φ give ∂p_s/∂φ — the "pPrime" implicit solvers need — and
-// ∂p_s/∂Θ = p_s/Θ). Every form is linear in Θ. Preconditions (asserted in debug builds):
-// φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in granular_state.hpp; AhmadiMaPressure also
-// friction_coefficient ≥ 0. evaluate_checked(law, φ, Θ, g0, material) validates them and
-// throws std::domain_error. Frictional pressure: friction.hpp.
+// Shape: ConstitutiveLaw (granular_state.hpp), law(φ, Θ, g0, material) → p_s ≥ 0, templated
+// on the scalar; law.with_derivatives(φ, Θ, rdf, material) gives ∂p_s/∂φ (through g0(φ): the
+// "pPrime" implicit solvers need) and ∂p_s/∂Θ = p_s/Θ. Every form is linear in Θ.
+// Preconditions (asserted in debug builds; law.checked(…) throws std::domain_error): φ ∈ [0, 1),
+// Θ ≥ 0, g0 > 0, material as in granular_state.hpp; AhmadiMaPressure also
+// friction_coefficient ≥ 0. Validity: kinetic theory of dense gases, φ up to random close
+// packing (0.64) — the papers state no fitted range. Frictional pressure: friction.hpp.
 #pragma once
 
 #include <string_view>
@@ -31,13 +32,13 @@ FLUIDBED_HOST_DEVICE constexpr S collisional_pressure(const S& phi, const S& the
 // Kinetic (ideal-gas) plus collisional part; → φρ_sΘ as φ → 0. Seed 002 eq. 54 prints the
 // inelastic excess compressibility as ((1 − e)/2) y^ES; its eq. 81 and text give (1 + e)/2,
 // which is what reproduces this form (tested).
-struct LunPressure {
-  constexpr std::string_view name() const { return "Lun"; }
+struct LunPressure : ConstitutiveLaw<LunPressure> {
+  constexpr std::string_view name() const { return "LunPressure"; }
   constexpr std::string_view reference() const { return detail::references::lun_1984; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
-                                              const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
+  FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi, const S& theta, const S& g0,
+                                          const GranularMaterial<T>& m) const {
     return m.density * (phi * theta) + detail::collisional_pressure(phi, theta, g0, m);
   }
 };
@@ -45,13 +46,13 @@ struct LunPressure {
 // Syamlal, Rogers & O'Brien (1993), MFIX documentation: Theory guide, DOE/METC-94/1004;
 // seed 001 eq. 22: p_s = 2 ρ_s (1 + e) φ² g0 Θ — the collisional part only (no kinetic
 // term, → 0 as φ → 0).
-struct SyamlalRogersOBrienPressure {
-  constexpr std::string_view name() const { return "SyamlalRogersOBrien"; }
+struct SyamlalRogersOBrienPressure : ConstitutiveLaw<SyamlalRogersOBrienPressure> {
+  constexpr std::string_view name() const { return "SyamlalRogersOBrienPressure"; }
   constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
-                                              const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
+  FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi, const S& theta, const S& g0,
+                                          const GranularMaterial<T>& m) const {
     return detail::collisional_pressure(phi, theta, g0, m);
   }
 };
@@ -63,20 +64,22 @@ struct SyamlalRogersOBrienPressure {
 // dimensionless particle friction coefficient: seed 001 calls it "the frictional viscosity",
 // which would make the bracket dimensional. "Ma–Ahmadi" is an RDF in seed 002 (MaAhmadi in
 // radial_distribution.hpp) and this pressure in seed 001: two different things.
-struct AhmadiMaPressure {
+struct AhmadiMaPressure : ConstitutiveLaw<AhmadiMaPressure> {
   double friction_coefficient = 0.0;  // μ_fr, dimensionless
 
-  constexpr std::string_view name() const { return "AhmadiMa"; }
+  constexpr explicit AhmadiMaPressure(double friction_coefficient_ = 0.0)
+      : friction_coefficient(friction_coefficient_) {}
+  constexpr std::string_view name() const { return "AhmadiMaPressure"; }
   constexpr std::string_view reference() const {
     return "Ahmadi, G. & Ma, D. (1990) Int. J. Multiphase Flow 16, 323-351";
   }
-  void validate(std::string_view function) const {
-    require_non_negative(function, "friction_coefficient", friction_coefficient);
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
+  constexpr Arguments<double, 1> parameter_domain() const {
+    return {{{"friction_coefficient", friction_coefficient, domains::non_negative<double>()}}};
   }
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi, const S& theta, const S& g0,
-                                              const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m) && friction_coefficient >= 0);
+  FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi, const S& theta, const S& g0,
+                                          const GranularMaterial<T>& m) const {
     const T e = m.restitution;
     const T inelastic = 1 + T(0.5) * (1 + e) * (1 - e + 2 * T(friction_coefficient));
     return m.density * (phi * theta) * (inelastic + 4 * phi * g0);

@@ -16,22 +16,25 @@
 //   the value and exact partial derivatives (core/dual.hpp). The radial distribution
 //   function g0 is an argument, so that a derivative in φ carries dg0/dφ through the
 //   chain rule whichever g0 the host picked (radial_distribution.hpp).
-// * Hot path and checked entry point. law(args…) asserts its documented preconditions in
-//   debug builds only; evaluate_checked(law, args…), with the same arguments, validates
-//   them and the law's own parameters and throws std::domain_error naming the argument and
-//   its value. The generic forms below serve every law of the shapes g0(φ) (and the
-//   frictional pressures p_f(φ)) and law(φ, Θ, g0, material); the other shapes have their
-//   own overloads next to the law. ConstitutiveSet::checked validates a whole set.
+// * One shape per kind of closure, from a CRTP base (below): each law writes its kernel
+//   `kernel(args…)` (templated on the scalar), name(), reference(), validity() and, if it has
+//   parameters, parameter_domain(); the base gives the hot path law(args…) (asserting
+//   within(domain) in debug builds only), law.with_derivatives(…), law.checked(args…) and
+//   law.checked_with_derivatives(…) (throwing std::domain_error naming the argument, its
+//   value and the law, "kinetic_theory::<name>"). Each argument's domain is declared once
+//   (the argument_domain of the shape, the law's parameter_domain): the assertion and the
+//   exception both derive from it.
 #pragma once
 
 #include <array>
 #include <cmath>
-#include <concepts>
 #include <string>
 #include <string_view>
 
+#include "../core/closure.hpp"
 #include "../core/config.hpp"
 #include "../core/constants.hpp"
+#include "../core/domain.hpp"
 #include "../core/dual.hpp"
 #include "../core/errors.hpp"
 
@@ -70,7 +73,7 @@ FLUIDBED_HOST_DEVICE constexpr StrainRate<S> strain_rate_of(const std::array<std
   return {trace, contraction};
 }
 
-// A value with its partial derivatives in φ and Θ.
+// A value with its partial derivatives in φ and Θ: law(φ, Θ, g0, material).with_derivatives.
 template <class T>
 struct ValueAndDerivatives {
   T value;
@@ -78,40 +81,27 @@ struct ValueAndDerivatives {
   T d_granular_temperature;  // ∂/∂Θ at fixed φ
 };
 
-// Validates the material for the checked entry points; `function` names the caller.
+// A value with its derivative in φ: g(φ).with_derivatives (radial distributions, frictional
+// pressures).
 template <class T>
-void validate(std::string_view function, const GranularMaterial<T>& m) {
-  require_positive(function, "material.diameter", m.diameter);
-  require_positive(function, "material.density", m.density);
-  require_in_closed(function, "material.restitution", m.restitution, T(0), T(1));
+struct ValueAndSlope {
+  T value;
+  T d_solid_fraction;  // dg/dφ
+};
+
+// The domains of the arguments the closures share, declared once: d, ρ_s > 0, e ∈ [0, 1].
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 3> domain(const GranularMaterial<T>& m) {
+  return {{{"material.diameter", m.diameter, domains::positive<T>()},
+           {"material.density", m.density, domains::positive<T>()},
+           {"material.restitution", m.restitution, domains::closed(T(0), T(1))}}};
 }
 
-// Validates φ ∈ [0, 1) for the checked entry points.
+// ∇·u finite, D':D' ≥ 0.
 template <class T>
-void validate_solid_fraction(std::string_view function, const T& solid_fraction) {
-  require_in_closed_open(function, "solid_fraction", solid_fraction, T(0), T(1));
-}
-
-// Validates φ ∈ [0, 1) and Θ ≥ 0 for the checked entry points.
-template <class T>
-void validate_state(std::string_view function, const T& solid_fraction, const T& granular_temperature) {
-  validate_solid_fraction(function, solid_fraction);
-  require_non_negative(function, "granular_temperature", granular_temperature);
-}
-
-// Validates the strain-rate invariants (∇·u finite, D':D' ≥ 0) for the checked entry points.
-template <class T>
-void validate(std::string_view function, const StrainRate<T>& rate) {
-  require_finite(function, "rate.divergence", rate.divergence);
-  require_non_negative(function, "rate.deviatoric_contraction", rate.deviatoric_contraction);
-}
-
-// Validates a law's own parameters (a maximum packing, a length scale, …) for the checked
-// entry points. Laws with parameters provide a member validate(function); the others have
-// nothing to validate.
-template <class Law>
-void validate_parameters(std::string_view function, const Law& law) {
-  if constexpr (requires { law.validate(function); }) law.validate(function);
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 2> domain(const StrainRate<T>& rate) {
+  return {{{"rate.divergence", rate.divergence, domains::finite<T>()},
+           {"rate.deviatoric_contraction", rate.deviatoric_contraction, domains::non_negative<T>()}}};
 }
 
 namespace detail {
@@ -130,6 +120,63 @@ inline constexpr std::string_view schaeffer_1987 =
 inline constexpr std::string_view hrenya_sinclair_1997 =
     "Hrenya, C.M. & Sinclair, J.L. (1997) AIChE J. 43, 853-869, doi:10.1002/aic.690430402";
 }  // namespace references
+
+// The validity of the constitutive laws of kinetic theory: derived for a dense gas of
+// inelastic spheres without a fitted range; stated as φ up to random close packing, 0.64.
+inline constexpr Validity<1> dense_gas_validity{{{"solid_fraction", 0.0, 0.64}}};
+
+// The state arguments the shapes share, each with its domain: φ ∈ [0, 1), Θ ≥ 0, g0 > 0.
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Argument<T> solid_fraction(const T& phi) {
+  return {"solid_fraction", phi, domains::closed_open(T(0), T(1))};
+}
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Argument<T> granular_temperature(const T& theta) {
+  return {"granular_temperature", theta, domains::non_negative<T>()};
+}
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Argument<T> radial_distribution_value(const T& g0) {
+  return {"g0", g0, domains::positive<T>()};
+}
+
+// A packing limit φ_max ∈ (0, 1] and the margin 0 < margin < φ_max below it where a singular
+// factor is continued linearly (a zero margin would take the slope at the pole).
+FLUIDBED_HOST_DEVICE constexpr Arguments<double, 2> packing_domain(double max_packing, double packing_margin) {
+  return {{{"max_packing", max_packing, domains::half_open(0.0, 1.0)},
+           {"packing_margin", packing_margin, domains::open(0.0, max_packing)}}};
+}
+
+// The plain value of an argument, for its domain: a dual number's value, the values of a
+// strain rate of dual numbers; any other argument as it is.
+template <class X>
+FLUIDBED_HOST_DEVICE constexpr const auto& plain(const X& x) {
+  return value_of(x);
+}
+template <class S>
+FLUIDBED_HOST_DEVICE constexpr StrainRate<value_type_of<S>> plain(const StrainRate<S>& rate) {
+  return {value_of(rate.divergence), value_of(rate.deviatoric_contraction)};
+}
+
+// The law's own parameters in their domain (true for a law without parameters).
+template <class Law>
+FLUIDBED_HOST_DEVICE constexpr bool parameters_within(const Law& law) {
+  if constexpr (requires { law.parameter_domain(); })
+    return within(law.parameter_domain());
+  else
+    return true;
+}
+
+// The function a checked entry point names in its messages: "kinetic_theory::<law name>".
+template <class Law>
+std::string checked_function_name(const Law& law) {
+  return "kinetic_theory::" + std::string(law.name());
+}
+
+// Throws std::domain_error naming `function` unless the law's parameters lie in their domain.
+template <class Law>
+void require_parameters(std::string_view function, const Law& law) {
+  if constexpr (requires { law.parameter_domain(); }) require_within(function, law.parameter_domain());
+}
 
 template <class S>
 struct scalar_of {
@@ -162,42 +209,6 @@ FLUIDBED_HOST_DEVICE constexpr S non_negative_part(const S& x) {
   return x > 0 ? x : S(0);
 }
 
-// The hot-path preconditions shared by the laws, as predicates for FLUIDBED_EXPECTS (no
-// exceptions, usable in device code; NaN fails every comparison). S may be a Dual.
-template <class S>
-FLUIDBED_HOST_DEVICE constexpr bool valid_solid_fraction(const S& phi) {
-  return value_of(phi) >= 0 && value_of(phi) < 1;
-}
-
-template <class T>
-FLUIDBED_HOST_DEVICE constexpr bool valid_material(const GranularMaterial<T>& m) {
-  return m.diameter > T(0) && m.density > T(0) && m.restitution >= T(0) && m.restitution <= T(1);
-}
-
-// The preconditions of law(φ, Θ, g0, material): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material valid.
-template <class S, class T>
-FLUIDBED_HOST_DEVICE constexpr bool valid_closure_arguments(const S& phi, const S& theta, const S& g0,
-                                                            const GranularMaterial<T>& m) {
-  return valid_solid_fraction(phi) && value_of(theta) >= 0 && value_of(g0) > 0 && valid_material(m);
-}
-
-// A packing limit φ_max ∈ (0, 1] and the margin 0 < margin < φ_max below it where a
-// singular factor is continued linearly (a zero margin would take the slope at the pole).
-FLUIDBED_HOST_DEVICE constexpr bool valid_packing(double max_packing, double packing_margin) {
-  return max_packing > 0 && max_packing <= 1 && packing_margin > 0 && packing_margin < max_packing;
-}
-
-inline void validate_packing(std::string_view function, double max_packing, double packing_margin) {
-  require_in_half_open(function, "max_packing", max_packing, 0.0, 1.0);
-  require_in_open(function, "packing_margin", packing_margin, 0.0, max_packing);
-}
-
-// The function a checked entry point names in its messages: "kinetic_theory::<law name>".
-template <class Law>
-std::string checked_function_name(const Law& law) {
-  return "kinetic_theory::" + std::string(law.name());
-}
-
 // φ² ρ_s d g0 (1 + e) √(Θ/π): the collisional transfer common to the Gidaspow/Lun shear
 // viscosity (× 4/5), Lun's bulk viscosity (× 4/3) and the collisional conductivity (× 2).
 template <class S, class T>
@@ -208,26 +219,43 @@ FLUIDBED_HOST_DEVICE S collisional_transfer(const S& phi, const S& theta, const 
 
 }  // namespace detail
 
-// The shape of a transport coefficient with a kinetic (streaming) and a collisional part,
-// the latter (numerator/denominator) × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
-// viscosity: 4/5, conductivity: 2). Law provides kinetic(φ, Θ, g0, m); the call is the sum.
-// The factor is a ratio of integers: a floating-point template argument would need clang 18 or later.
-template <class Law, int numerator, int denominator>
-struct KineticPlusCollisional {
-  template <class S, class T>
-  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
-    return value_type_of<S>(numerator) / denominator * detail::collisional_transfer(phi, theta, g0, m);
+// The entry points every kinetic-theory closure shares (CRTP). Law provides name() and
+//   static constexpr Arguments<T, N> argument_domain(args…)   (plain scalars: the shape's)
+//   template <class S, …> … kernel(args…) const               (S a scalar or a Dual)
+//   constexpr Arguments<double, K> parameter_domain() const   (if it has parameters)
+template <class Law>
+struct KineticTheoryLaw {
+  // Hot path: the arguments and parameters in their domains are asserted in debug builds only.
+  template <class... Args>
+  FLUIDBED_HOST_DEVICE constexpr auto operator()(const Args&... args) const {
+    FLUIDBED_EXPECTS(within(Law::argument_domain(detail::plain(args)...)) && detail::parameters_within(self()));
+    return self().kernel(args...);
   }
-  template <class S, class T>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    return static_cast<const Law&>(*this).kinetic(phi, theta, g0, m) + collisional(phi, theta, g0, m);
+
+  // Checked entry point: throws std::domain_error naming the first argument or parameter out
+  // of its domain, its value and the law, then evaluates.
+  template <class... Args>
+  auto checked(const Args&... args) const {
+    require_valid(args...);
+    return self().kernel(args...);
   }
+
+  // Throws as `checked` would, without evaluating.
+  template <class... Args>
+  void require_valid(const Args&... args) const {
+    const std::string function = detail::checked_function_name(self());
+    require_within(function, Law::argument_domain(args...));
+    detail::require_parameters(function, self());
+  }
+
+ protected:
+  FLUIDBED_HOST_DEVICE constexpr const Law& self() const { return static_cast<const Law&>(*this); }
 };
 
-// Value and (∂/∂φ, ∂/∂Θ) of any callable f(φ, Θ) written for a generic scalar: the usual
-// way to get a closure's derivatives, e.g.
+// Value and (∂/∂φ, ∂/∂Θ) of any callable f(φ, Θ) written for a generic scalar, e.g. a sum of
+// laws or a host's own closure:
 //   with_derivatives([&](auto phi, auto theta) { return law(phi, theta, rdf(phi), m); }, φ, Θ)
+// (the same as law.with_derivatives(φ, Θ, rdf, m)).
 template <class T, class F>
 FLUIDBED_HOST_DEVICE ValueAndDerivatives<T> with_derivatives(const F& f, const T& solid_fraction,
                                                              const T& granular_temperature) {
@@ -236,38 +264,75 @@ FLUIDBED_HOST_DEVICE ValueAndDerivatives<T> with_derivatives(const F& f, const T
   return {r.value, r.derivative[0], r.derivative[1]};
 }
 
-// The calling shapes served by the generic checked entry points below.
-template <class Law, class T>
-concept FractionLaw = requires(const Law& law, const T& phi) {
-  { law(phi) } -> std::convertible_to<T>;
-};
-template <class Law, class T>
-concept ClosureLaw = requires(const Law& law, const T& x, const GranularMaterial<T>& m) {
-  { law(x, x, x, m) } -> std::convertible_to<T>;
+// The shape g(φ): the radial distribution functions and the frictional pressures. Law
+// provides kernel(φ) templated on the scalar.
+template <class Law>
+struct SolidFractionLaw : KineticTheoryLaw<Law> {
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 1> argument_domain(const T& phi) {
+    return {detail::solid_fraction(phi)};
+  }
+
+  // g and dg/dφ (hot path).
+  template <class T>
+  FLUIDBED_HOST_DEVICE ValueAndSlope<T> with_derivatives(const T& phi) const {
+    const Dual<T, 1> g = (*this)(Dual<T, 1>::variable(phi, 0));
+    return {g.value, g.derivative[0]};
+  }
+  template <class T>
+  ValueAndSlope<T> checked_with_derivatives(const T& phi) const {
+    this->require_valid(phi);
+    return with_derivatives(phi);
+  }
 };
 
-// Checked entry point of the laws g(φ): the radial distribution functions and the
-// frictional pressures. Throws std::domain_error unless φ ∈ [0, 1) and the law's parameters
-// are valid.
-template <class T, FractionLaw<T> Law>
-T evaluate_checked(const Law& law, const T& phi) {
-  const std::string function = detail::checked_function_name(law);
-  validate_solid_fraction(function, phi);
-  validate_parameters(function, law);
-  return law(phi);
-}
+// The shape law(φ, Θ, g0, material): granular pressures, shear and bulk viscosities,
+// conductivities, dissipation. Law provides kernel(φ, Θ, g0, material) templated on the scalar.
+template <class Law>
+struct ConstitutiveLaw : KineticTheoryLaw<Law> {
+  // φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as domain(GranularMaterial).
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 6> argument_domain(const T& phi, const T& theta, const T& g0,
+                                                                          const GranularMaterial<T>& m) {
+    return join(Arguments<T, 3>{detail::solid_fraction(phi), detail::granular_temperature(theta),
+                                detail::radial_distribution_value(g0)},
+                kinetic_theory::domain(m));
+  }
 
-// Checked entry point of the closures law(φ, Θ, g0, material): granular pressures, shear and
-// bulk viscosities, conductivities, dissipation. Throws std::domain_error unless φ ∈ [0, 1),
-// Θ ≥ 0, g0 > 0, the material and the law's parameters are valid.
-template <class T, ClosureLaw<T> Law>
-T evaluate_checked(const Law& law, const T& phi, const T& theta, const T& g0, const GranularMaterial<T>& m) {
-  const std::string function = detail::checked_function_name(law);
-  validate_state(function, phi, theta);
-  require_positive(function, "g0", g0);
-  validate(function, m);
-  validate_parameters(function, law);
-  return law(phi, theta, g0, m);
-}
+  // The value with ∂/∂φ (g0's slope included: `rdf` is the radial distribution, called with
+  // the dual φ) and ∂/∂Θ (hot path).
+  template <class T, class RadialDistribution>
+  FLUIDBED_HOST_DEVICE ValueAndDerivatives<T> with_derivatives(const T& phi, const T& theta,
+                                                               const RadialDistribution& rdf,
+                                                               const GranularMaterial<T>& m) const {
+    return kinetic_theory::with_derivatives(
+        [&](const auto& p, const auto& t) { return (*this)(p, t, rdf(p), m); }, phi, theta);
+  }
+
+  // Checked: the radial distribution's argument and parameters (rdf.checked), then this law's.
+  template <class T, class RadialDistribution>
+  ValueAndDerivatives<T> checked_with_derivatives(const T& phi, const T& theta, const RadialDistribution& rdf,
+                                                  const GranularMaterial<T>& m) const {
+    this->require_valid(phi, theta, rdf.checked(phi), m);
+    return with_derivatives(phi, theta, rdf, m);
+  }
+};
+
+// The shape of a transport coefficient with a kinetic (streaming) and a collisional part,
+// the latter (numerator/denominator) × φ² ρ_s d g0 (1 + e) √(Θ/π) (Gidaspow's collisional
+// viscosity: 4/5, conductivity: 2). Law provides kinetic(φ, Θ, g0, m); the call is the sum.
+// The factor is a ratio of integers: a floating-point template argument would need clang 18 or later.
+template <class Law, int numerator, int denominator>
+struct KineticPlusCollisional : ConstitutiveLaw<Law> {
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S collisional(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    FLUIDBED_EXPECTS(within(ConstitutiveLaw<Law>::argument_domain(value_of(phi), value_of(theta), value_of(g0), m)));
+    return value_type_of<S>(numerator) / denominator * detail::collisional_transfer(phi, theta, g0, m);
+  }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    return this->self().kinetic(phi, theta, g0, m) + collisional(phi, theta, g0, m);
+  }
+};
 
 }  // namespace fluidbed::kinetic_theory

@@ -6,10 +6,13 @@
 // (φ_max = 0.63) 22.6, Lathouwers–Bellan (0.64) 103). So g0 is a separate, pluggable
 // object: call it with φ (a Dual φ gives dg0/dφ) and pass its value to the closures.
 //
-// Shape: g0(φ) templated on the scalar; name(); reference(). φ ∈ [0, 1) is the
+// Shape: SolidFractionLaw (granular_state.hpp): g0(φ) templated on the scalar,
+// g0.with_derivatives(φ) → {g0, dg0/dφ}, g0.checked(φ), g0.checked_with_derivatives(φ); name(),
+// reference(), validity() (the φ range each form was derived or fitted for). φ ∈ [0, 1) is the
 // precondition of every form (asserted in debug builds), and for the forms with a packing
-// limit φ_max ∈ (0, 1] and 0 < packing_margin < φ_max; evaluate_checked(rdf, φ)
-// (granular_state.hpp) validates both and throws std::domain_error. Every form → 1 as φ → 0 except
+// limit φ_max ∈ (0, 1] and 0 < packing_margin < φ_max (parameter_domain); the checked entry
+// points throw std::domain_error for either. RadialDistributions (registry.hpp) lists them.
+// Every form → 1 as φ → 0 except
 // GidaspowRadialDistribution (→ 3/5, as published). The cube-root forms approach 1 like 1 + (φ/φ_max)^(1/3): their
 // slope is +∞ at φ = 0.
 //
@@ -25,6 +28,7 @@
 // every form is the published formula.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -39,14 +43,14 @@ inline constexpr double default_packing_margin = 0.01;
 // seed 002 eq. 53: g0 = (1 − φ/2)/(1 − φ)³. Hard-sphere fluid, accurate to the freezing
 // point φ ≈ 0.49 and used up to 0.55 (seed 002 Fig. 21); no packing limit (13.5 at 0.63),
 // finite for φ < 1.
-struct CarnahanStarling {
+struct CarnahanStarling : SolidFractionLaw<CarnahanStarling> {
   constexpr std::string_view name() const { return "CarnahanStarling"; }
   constexpr std::string_view reference() const {
     return "Carnahan, N.F. & Starling, K.E. (1969) J. Chem. Phys. 51, 635-636, doi:10.1063/1.1672048";
   }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, 0.55}}}; }
   template <class S>
-  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
+  FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi) const {
     const S gap = 1 - phi;
     return (1 - value_type_of<S>(0.5) * phi) / (gap * gap * gap);
   }
@@ -54,33 +58,40 @@ struct CarnahanStarling {
 
 // Percus–Yevick contact value (Lebowitz 1964, Phys. Rev. 133, A895–A899,
 // doi:10.1103/PhysRev.133.A895, one class): g0 = (1 + φ/2)/(1 − φ)². The one-class limit of
-// the Lebowitz mixture form (seed 000 eq. 6.16); finite for φ < 1.
-struct PercusYevick {
+// the Lebowitz mixture form (seed 000 eq. 6.16); finite for φ < 1. Validity: the hard-sphere
+// fluid, to the freezing point φ ≈ 0.49.
+struct PercusYevick : SolidFractionLaw<PercusYevick> {
   constexpr std::string_view name() const { return "PercusYevick"; }
   constexpr std::string_view reference() const {
     return "Lebowitz, J.L. (1964) Phys. Rev. 133, A895-A899, doi:10.1103/PhysRev.133.A895";
   }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, 0.49}}}; }
   template <class S>
-  FLUIDBED_HOST_DEVICE constexpr S operator()(const S& phi) const {
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi));
+  FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi) const {
     const S gap = 1 - phi;
     return (1 + value_type_of<S>(0.5) * phi) / (gap * gap);
   }
 };
 
 // Lun & Savage (1986), Acta Mech. 63, 15–44 (OpenFOAM LunSavage):
-// g0 = (1 − φ/φ_max)^(−2.5 φ_max), continued linearly above φ_max − packing_margin.
-struct LunSavage {
+// g0 = (1 − φ/φ_max)^(−2.5 φ_max), continued linearly above φ_max − packing_margin. Validity:
+// φ up to φ_max. Registered with φ_max = 0.63.
+struct LunSavage : SolidFractionLaw<LunSavage> {
   double max_packing;
   double packing_margin = default_packing_margin;
 
+  constexpr LunSavage(double max_packing_, double packing_margin_ = default_packing_margin)
+      : max_packing(max_packing_), packing_margin(packing_margin_) {}
+  static constexpr std::array<LunSavage, 1> registered() { return {LunSavage{0.63}}; }
   constexpr std::string_view name() const { return "LunSavage"; }
   constexpr std::string_view reference() const { return "Lun, C.K.K. & Savage, S.B. (1986) Acta Mech. 63, 15-44"; }
-  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::packing_domain(max_packing, packing_margin);
+  }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     using T = value_type_of<S>;
     const T m = T(max_packing), exponent = T(-2.5) * m;
     return detail::continued_linearly_above(phi, m - T(packing_margin),
@@ -93,17 +104,19 @@ namespace detail {
 // g0 = prefactor/(1 − (φ/φ_max)^(1/3)), the cube-root form shared by Ogawa,
 // Sinclair–Jackson and Gidaspow, continued linearly above φ_max − packing_margin. The
 // prefactor is the ratio numerator/denominator: a floating-point template argument would
-// need clang 18 or later.
-template <int numerator, int denominator>
-struct CubeRootContact {
+// need clang 18 or later. Validity: φ up to φ_max.
+template <class Law, int numerator, int denominator>
+struct CubeRootContact : SolidFractionLaw<Law> {
   double max_packing;
   double packing_margin;
 
-  void validate(std::string_view function) const { validate_packing(function, max_packing, packing_margin); }
+  constexpr CubeRootContact(double max_packing_, double packing_margin_)
+      : max_packing(max_packing_), packing_margin(packing_margin_) {}
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const { return packing_domain(max_packing, packing_margin); }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::cbrt;
-    FLUIDBED_EXPECTS(valid_solid_fraction(phi) && valid_packing(max_packing, packing_margin));
     using T = value_type_of<S>;
     const T m = T(max_packing);
     return T(numerator) / denominator *
@@ -115,10 +128,11 @@ struct CubeRootContact {
 
 // Ogawa, Umemura & Oshima (1980), Z. angew. Math. Phys. 31, 483–493; seed 001 eq. 24
 // (FLUENT calls it "Lun et al."): g0 = 1/(1 − (φ/φ_max)^(1/3)), continued linearly above
-// φ_max − packing_margin. Seed 001 uses φ_max = 0.63.
-struct Ogawa : detail::CubeRootContact<1, 1> {
+// φ_max − packing_margin. Seed 001 uses φ_max = 0.63, with which it is registered.
+struct Ogawa : detail::CubeRootContact<Ogawa, 1, 1> {
   constexpr explicit Ogawa(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
+  static constexpr std::array<Ogawa, 1> registered() { return {Ogawa{0.63}}; }
   constexpr std::string_view name() const { return "Ogawa"; }
   constexpr std::string_view reference() const {
     return "Ogawa, S., Umemura, A. & Oshima, N. (1980) Z. angew. Math. Phys. 31, 483-493";
@@ -128,10 +142,12 @@ struct Ogawa : detail::CubeRootContact<1, 1> {
 // Sinclair & Jackson (1989), AIChE J. 35, 1473–1486, doi:10.1002/aic.690350908: the same
 // expression as Ogawa, 1/(1 − (φ/φ_max)^(1/3)). OpenFOAM's SinclairJackson also freezes
 // g0 above alphaMinFriction while its g0prime does not; here there is no freeze, only the
-// linear continuation above φ_max − packing_margin, with a consistent derivative.
-struct SinclairJackson : detail::CubeRootContact<1, 1> {
+// linear continuation above φ_max − packing_margin, with a consistent derivative. Registered
+// with φ_max = 0.63.
+struct SinclairJackson : detail::CubeRootContact<SinclairJackson, 1, 1> {
   constexpr explicit SinclairJackson(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
+  static constexpr std::array<SinclairJackson, 1> registered() { return {SinclairJackson{0.63}}; }
   constexpr std::string_view name() const { return "SinclairJackson"; }
   constexpr std::string_view reference() const {
     return "Sinclair, J.L. & Jackson, R. (1989) AIChE J. 35, 1473-1486, doi:10.1002/aic.690350908";
@@ -140,11 +156,15 @@ struct SinclairJackson : detail::CubeRootContact<1, 1> {
 
 // Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press (SedFoam Gidaspow):
 // g0 = (3/5)/(1 − (φ/φ_max)^(1/3)). As published it tends to 3/5, not 1, as φ → 0; it is
-// offered for reproducing codes that use it, not as a dilute-consistent form.
-struct GidaspowRadialDistribution : detail::CubeRootContact<3, 5> {
+// offered for reproducing codes that use it, not as a dilute-consistent form. Registered with
+// φ_max = 0.63.
+struct GidaspowRadialDistribution : detail::CubeRootContact<GidaspowRadialDistribution, 3, 5> {
   constexpr explicit GidaspowRadialDistribution(double max_packing, double packing_margin = default_packing_margin)
       : CubeRootContact{max_packing, packing_margin} {}
-  constexpr std::string_view name() const { return "Gidaspow"; }
+  static constexpr std::array<GidaspowRadialDistribution, 1> registered() {
+    return {GidaspowRadialDistribution{0.63}};
+  }
+  constexpr std::string_view name() const { return "GidaspowRadialDistribution"; }
   constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
 };
 
@@ -152,18 +172,22 @@ struct GidaspowRadialDistribution : detail::CubeRootContact<3, 5> {
 // with Table III (the Twente TFM):
 //   g0 = (1 + 2.5φ + 4.5904φ² + 4.515439φ³) / (1 − (φ/0.64356)³)^0.67802.
 // MFiX's source writes 4.5094, a transposition of the published 4.5904. The
-// denominator factor is continued linearly above 0.64356 − packing_margin.
-struct MaAhmadi {
+// denominator factor is continued linearly above 0.64356 − packing_margin. Validity: fitted
+// to hard-sphere data up to its packing limit 0.64356.
+struct MaAhmadi : SolidFractionLaw<MaAhmadi> {
   static constexpr long double max_packing = 0.64356L;
   double packing_margin = default_packing_margin;
 
+  constexpr explicit MaAhmadi(double packing_margin_ = default_packing_margin) : packing_margin(packing_margin_) {}
   constexpr std::string_view name() const { return "MaAhmadi"; }
   constexpr std::string_view reference() const { return "Ma, D. & Ahmadi, G. (1986) J. Chem. Phys. 84, 3449-3450"; }
-  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, double(max_packing)}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::packing_domain(double(max_packing), packing_margin);
+  }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
     using T = value_type_of<S>;
     const S polynomial = 1 + phi * (T(2.5) + phi * (T(4.5904L) + phi * T(4.515439L)));
     const S packing = detail::continued_linearly_above(phi, T(max_packing) - T(packing_margin), [](const auto& x) {
@@ -220,19 +244,25 @@ FLUIDBED_HOST_DEVICE constexpr S mansoori_sum(const MansooriFactors<S>& f, const
 // Seed 004 prints the third term of h_ik as 8 r² ξ/(1 − x)²: dimensionally wrong (it has
 // units of length) — the Mansoori et al. (1971) term is 8 r² ξ²/(1 − x)³, which is what
 // reduces to Carnahan–Starling at φ_max = 1. Each factor (1 − x)^(−j) is continued linearly
-// above φ_max − packing_margin. Seed 004 uses φ_max = 0.64.
-struct LathouwersBellan {
+// above φ_max − packing_margin. Seed 004 uses φ_max = 0.64, with which it is registered.
+// Validity: φ up to φ_max.
+struct LathouwersBellan : SolidFractionLaw<LathouwersBellan> {
   double max_packing;
   double packing_margin = default_packing_margin;
 
+  constexpr LathouwersBellan(double max_packing_, double packing_margin_ = default_packing_margin)
+      : max_packing(max_packing_), packing_margin(packing_margin_) {}
+  static constexpr std::array<LathouwersBellan, 1> registered() { return {LathouwersBellan{0.64}}; }
   constexpr std::string_view name() const { return "LathouwersBellan"; }
   constexpr std::string_view reference() const {
     return "Lathouwers, D. & Bellan, J. (2001) Int. J. Multiphase Flow 27, 2155-2187";
   }
-  void validate(std::string_view function) const { detail::validate_packing(function, max_packing, packing_margin); }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::packing_domain(max_packing, packing_margin);
+  }
   template <class S>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi) const {
-    FLUIDBED_EXPECTS(detail::valid_solid_fraction(phi) && detail::valid_packing(max_packing, packing_margin));
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     const auto f = detail::modified_mansoori_factors(phi, max_packing, packing_margin);
     return detail::mansoori_sum(f, S(value_type_of<S>(0.5) * phi));
   }

@@ -2,14 +2,18 @@
 // suspension (FLUENT/seed 001 quote μ_s and λ_s per unit volume of the solids phase:
 // theirs = ours/φ).
 //
-// Shape: law(φ, Θ, g0, material) → μ ≥ 0, templated on the scalar; shear-viscosity laws
-// also give law.kinetic(...) and law.collisional(...). Every form is ∝ √Θ, so ∂μ/∂Θ =
-// μ/(2Θ), +∞ at Θ = 0 (the true derivative; the value is 0 there). Preconditions (asserted in
-// debug builds): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in granular_state.hpp;
-// HrenyaSinclairViscosity also length_scale > 0. evaluate_checked(law, φ, Θ, g0, material)
-// validates them and throws std::domain_error. Frictional viscosity: friction.hpp.
+// Shape: ConstitutiveLaw (granular_state.hpp), law(φ, Θ, g0, material) → μ ≥ 0, templated on
+// the scalar, with law.with_derivatives(φ, Θ, rdf, material), law.checked(…) and
+// law.checked_with_derivatives(…); shear-viscosity laws also give law.kinetic(...) and
+// law.collisional(...). Every form is ∝ √Θ, so ∂μ/∂Θ = μ/(2Θ), +∞ at Θ = 0 (the true
+// derivative; the value is 0 there). Preconditions (asserted in debug builds; the checked
+// entry points throw std::domain_error): φ ∈ [0, 1), Θ ≥ 0, g0 > 0, material as in
+// granular_state.hpp; the Hrenya–Sinclair laws also length_scale > 0. Validity: dense-gas
+// kinetic theory, no fitted range (granular_state.hpp's dense_gas_validity). Frictional
+// viscosity: friction.hpp.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -34,6 +38,13 @@ FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const
   return 1 + diameter / (6 * numbers::sqrt2<T>() * T(length_scale)) / (phi + T(1e-5L));
 }
 
+// Hrenya and Sinclair's length L > 0 (their viscosity and conductivity), and the L they are
+// registered with.
+FLUIDBED_HOST_DEVICE constexpr Arguments<double, 1> length_scale_domain(double length_scale) {
+  return {{{"length_scale", length_scale, domains::positive<double>()}}};
+}
+inline constexpr double registered_length_scale = 0.05;  // [m]
+
 }  // namespace detail
 
 // The collisional shear viscosity of every law below is Gidaspow's (1994), seed 001 eq. 26
@@ -48,8 +59,9 @@ using WithGidaspowCollisionalViscosity = KineticPlusCollisional<Law, 4, 5>;
 // seed 002 eq. 79 puts (1 + e) g0 under the square root and drops the factor 2. Both are
 // tested against this form. → 2 μ_dil/(1 + e) as φ → 0 (finite).
 struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
-  constexpr std::string_view name() const { return "Gidaspow"; }
+  constexpr std::string_view name() const { return "GidaspowViscosity"; }
   constexpr std::string_view reference() const { return detail::references::gidaspow_1994; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     const T one_plus_e = 1 + m.restitution;
@@ -63,8 +75,9 @@ struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
 //   μ_kin = φ ρ_s d √(πΘ) / (6 (3 − e)) · [1 + (2/5)(1 + e)(3e − 1) φ g0],
 // plus Gidaspow's collisional part (OpenFOAM Syamlal). → 0 as φ → 0.
 struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
-  constexpr std::string_view name() const { return "Syamlal"; }
+  constexpr std::string_view name() const { return "SyamlalViscosity"; }
   constexpr std::string_view reference() const { return detail::references::syamlal_rogers_obrien_1993; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
@@ -80,18 +93,22 @@ struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
 //   μ_kin = ρ_s d √Θ [ (√π/15) g0 (1+e)(3e−1) φ²/(3−e)
 //                     + (√π/6) φ (λ/2 + (3e−1)/4) / ((3−e) λ/2)
 //                     + (10/96) √π / ((1+e) ((3−e)/2) g0 λ) ],
-// plus Gidaspow's collisional part.
+// plus Gidaspow's collisional part. Registered with L = 0.05 m (a laboratory riser).
 struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclairViscosity> {
   double length_scale;  // L [m]
 
   constexpr explicit HrenyaSinclairViscosity(double length) : length_scale(length) {}
-  constexpr std::string_view name() const { return "HrenyaSinclair"; }
+  static constexpr std::array<HrenyaSinclairViscosity, 1> registered() {
+    return {HrenyaSinclairViscosity(detail::registered_length_scale)};
+  }
+  constexpr std::string_view name() const { return "HrenyaSinclairViscosity"; }
   constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
-  void validate(std::string_view function) const { require_positive(function, "length_scale", length_scale); }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
+  constexpr Arguments<double, 1> parameter_domain() const { return detail::length_scale_domain(length_scale); }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
-    FLUIDBED_EXPECTS(length_scale > 0);
+    FLUIDBED_EXPECTS(detail::parameters_within(*this));
     const T e = m.restitution, three_minus_e = 3 - e;
     const T sqrt_pi = numbers::sqrt_pi<T>();
     const S lambda = detail::hrenya_sinclair_path_factor(phi, m.diameter, length_scale);
@@ -106,12 +123,12 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
 // Lun et al. (1984), J. Fluid Mech. 140, 223–256; seed 001 eq. 29 (× φ):
 //   λ_s = (4/3) φ² ρ_s d g0 (1 + e) √(Θ/π).
 // Seed 004's binary closure implies λ = (5/3) μ_coll, the same value for one class.
-struct LunBulkViscosity {
-  constexpr std::string_view name() const { return "Lun"; }
+struct LunBulkViscosity : ConstitutiveLaw<LunBulkViscosity> {
+  constexpr std::string_view name() const { return "LunBulkViscosity"; }
   constexpr std::string_view reference() const { return detail::references::lun_1984; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   template <class S, class T>
-  FLUIDBED_HOST_DEVICE S operator()(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
-    FLUIDBED_EXPECTS(detail::valid_closure_arguments(phi, theta, g0, m));
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     return value_type_of<S>(4) / 3 * detail::collisional_transfer(phi, theta, g0, m);
   }
 };
