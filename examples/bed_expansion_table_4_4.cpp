@@ -10,16 +10,15 @@
 #include <cstdio>
 #include <optional>
 
-#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/fluidization.hpp"
 #include "fluidbed/settling.hpp"
 #include "fluidbed/single_particle.hpp"
 #include "seed000_table_4_4.hpp"
 
 namespace {
-
 
 enum Column { richardson_zaki, mazzei_lettieri, wen_yu, ergun, columns };
 constexpr const char* column_name[columns] = {"R&Z", "M&L", "W&Y", "Ergun"};
@@ -52,7 +51,9 @@ int main() {
       "         (the thesis's ε_M&L column, in brackets, is CFD output a few thousandths lower);\n"
       "  W&Y    Wen & Yu (α = 2.70, Schiller–Naumann C_D);  Ergun  Ergun (1952).\n"
       "Each column: computed, thesis, difference.\n\n",
-      fluidbed::single_particle::DallavalleTerminalVelocity{}(seed000::table_4_3[2].fluid, fluidbed::Particles<double>{seed000::table_4_3[2].particles.density, seed000::system_3_printed_diameter}));
+      fluidbed::single_particle::DallavalleTerminalVelocity{}(
+          seed000::table_4_3[2].fluid,
+          fluidbed::Particles<double>{seed000::table_4_3[2].particles.density, seed000::system_3_printed_diameter}));
 
   const fluidbed::drag::ConstantExponentDrag wen_yu_law = fluidbed::drag::ConstantExponentDrag::wen_yu_1966();
   double worst[3][columns] = {};
@@ -62,9 +63,11 @@ int main() {
     const seed000::System& system = seed000::table_4_3.at(static_cast<std::size_t>(row.system - 1));
     const std::optional<double> computed[columns] = {
         fluidbed::fluidization::richardson_zaki_equilibrium_voidage(row.velocity, system.fluid, system.particles),
-        fluidbed::fluidization::equilibrium_voidage(fluidbed::drag::MazzeiLettieri{}, row.velocity, system.fluid, system.particles),
+        fluidbed::fluidization::equilibrium_voidage(fluidbed::drag::MazzeiLettieri{}, row.velocity, system.fluid,
+                                                    system.particles),
         fluidbed::fluidization::equilibrium_voidage(wen_yu_law, row.velocity, system.fluid, system.particles),
-        fluidbed::fluidization::equilibrium_voidage(fluidbed::drag::Ergun{}, row.velocity, system.fluid, system.particles),
+        fluidbed::fluidization::equilibrium_voidage(fluidbed::drag::Ergun{}, row.velocity, system.fluid,
+                                                    system.particles),
     };
     const double thesis[columns] = {row.richardson_zaki, row.richardson_zaki, row.wen_yu, row.ergun};
     std::printf("%2d   %.2e  ", row.system, row.velocity);

@@ -217,7 +217,8 @@ void add_law(plot::Panel& panel, const AnyDragLaw& law, int index, const System&
   const plot::Look look = plot::look(index);
   const std::string inside_style = switched ? "lines lw 7 lc rgb '#d0d0d0'" : look.line(2.5);
   const std::string outside_style = switched ? "lines lw 3 dt (2,3) lc rgb '#d0d0d0'" : look.line(1.2, "(2,3)");
-  std::optional<double> equilibrium = fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
+  std::optional<double> equilibrium =
+      fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
   std::string title = (name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis1949)" : name) + "   [" + validity_text(v) + "]";
   char text[64];
   if (!equilibrium)
@@ -329,7 +330,8 @@ int main(int argc, char** argv) {
           std::visit([](const auto& l) { return l.native_buoyancy == drag::Buoyancy::classical; }, law);
       std::printf("  %-26s %-9s", name.c_str(), classical ? "classical" : "press.gr.");
       for (double e : table_voidages) std::printf(" %9.4g", dimensionless_force(law, s, e));
-      const std::optional<double> eq = fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
+      const std::optional<double> eq =
+          fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
       if (eq)
         std::printf("   %.4f\n", *eq);
       else

@@ -40,17 +40,16 @@
 #include <utility>
 #include <vector>
 
-#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/drag/di_felice.hpp"
 #include "fluidbed/drag/ergun.hpp"
 #include "fluidbed/drag/mazzei_lettieri.hpp"
+#include "fluidbed/drag/wen_yu.hpp"
 #include "fluidbed/fluidization.hpp"
 #include "fluidbed/settling.hpp"
 #include "fluidbed/single_particle.hpp"
 #include "plot.hpp"
 
 namespace {
-
 
 constexpr double voidages[] = {0.35, 0.40, 0.50, 0.60, 0.70, 0.80, 0.90};
 constexpr int voidage_count = int(std::size(voidages));
@@ -67,7 +66,8 @@ template <class Law>
 Curves curves_of(const Law& law) {
   Curves c(voidage_count, std::vector<std::optional<double>>(re_points));
   for (int e = 0; e < voidage_count; ++e)
-    for (int i = 0; i < re_points; ++i) c[e][i] = fluidbed::fluidization::voidage_ratio(law, reynolds_at(i), voidages[e]);
+    for (int i = 0; i < re_points; ++i)
+      c[e][i] = fluidbed::fluidization::voidage_ratio(law, reynolds_at(i), voidages[e]);
   return c;
 }
 

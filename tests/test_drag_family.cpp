@@ -176,8 +176,10 @@ TEST_CASE("single-particle C_D·Re agrees with the mpmath reference and the seed
   // thesis was read: C_D(1) = 27.6, C_D(10) = 4.151066, C_D(100) = 1.091731, the 0.4 % jump at
   // Re = 1000; Dallavalle C_D(10) = 4.6134455.
   CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(1.0) == doctest::Approx(27.6).epsilon(1e-12));
-  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(10.0) == doctest::Approx(4.151066).epsilon(1e-6));
-  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(100.0) == doctest::Approx(1.091731).epsilon(1e-6));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(10.0) ==
+        doctest::Approx(4.151066).epsilon(1e-6));
+  CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(100.0) ==
+        doctest::Approx(1.091731).epsilon(1e-6));
   CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(std::nextafter(1000.0, 0.0)) ==
         doctest::Approx(0.438288).epsilon(1e-6));
   CHECK(single_particle::SchillerNaumannCoefficient{}.drag_coefficient(1000.0) == 0.44);

@@ -110,7 +110,9 @@ TEST_CASE("Re* over every finite state: the Newton (n → 2.4) and Stokes (n →
   // it is ≪ 1, n = 4.8 and ln Re* = ln Re − 4.8 ln ε. The Halley step of the solver once formed
   // (0.175 Re*^¾)⁴, which overflowed (and gave NaN) beyond ln Re* ≈ 239 in double, 32 in float.
   using settling::solve_richardson_zaki_terminal_reynolds;
-  const auto log_re_star = [](auto re, auto eps) { return solve_richardson_zaki_terminal_reynolds(re, eps).log_terminal_reynolds; };
+  const auto log_re_star = [](auto re, auto eps) {
+    return solve_richardson_zaki_terminal_reynolds(re, eps).log_terminal_reynolds;
+  };
   struct Case {
     double re, eps, n;
   };

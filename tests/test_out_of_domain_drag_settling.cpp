@@ -141,7 +141,8 @@ TEST_CASE_TEMPLATE("out of domain: Syamlal-O'Brien calibration from minimum flui
                                      {"minimum_fluidization_voidage", 0.45, outside_open_unit}},
                                     settling_system),
                        [](const ValuesOf<T>& v) {
-                         return fluidization::syamlal_obrien_from_minimum_fluidization(v[0], v[1], fluid_of(v, 2), particles_of(v, 2), v[6])
+                         return fluidization::syamlal_obrien_from_minimum_fluidization(v[0], v[1], fluid_of(v, 2),
+                                                                                       particles_of(v, 2), v[6])
                              .c1();
                        });
 }
@@ -151,8 +152,9 @@ TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", 
   const std::vector<ArgumentCase> reynolds{{"terminal_reynolds", 10.0, negative, {0.0}}};
   check_entry_point<T>("MazzeiExponent::checked", reynolds,
                        [](const ValuesOf<T>& v) { return settling::MazzeiExponent{}.checked(v[0]); });
-  check_entry_point<T>("MazzeiExponent::checked_with_derivatives", {{"terminal_reynolds", 10.0, negative}},
-                       [](const ValuesOf<T>& v) { return settling::MazzeiExponent{}.checked_with_derivatives(v[0]).d_argument; });
+  check_entry_point<T>(
+      "MazzeiExponent::checked_with_derivatives", {{"terminal_reynolds", 10.0, negative}},
+      [](const ValuesOf<T>& v) { return settling::MazzeiExponent{}.checked_with_derivatives(v[0]).d_argument; });
   CHECK(settling::MazzeiExponent{}.checked_with_derivatives(T(0)).d_argument ==
         -std::numeric_limits<T>::infinity());  // documented: −∞ at Re_t = 0
   check_entry_point<T>("RoweExponent::checked", reynolds,
@@ -162,48 +164,58 @@ TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", 
   check_entry_point<T>("RichardsonZaki1954Exponent::checked",
                        concatenated(reynolds, {{"wall_ratio", 0.01, outside_solid_fraction, {0.0}}}),
                        [](const ValuesOf<T>& v) { return settling::RichardsonZaki1954Exponent{v[1]}.checked(v[0]); });
+  check_entry_point<T>("KhanRichardsonExponent::checked",
+                       {{"archimedes", 100.0, negative, {0.0}},
+                        {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
+                       [](const ValuesOf<T>& v) { return settling::KhanRichardsonExponent{v[1]}.checked(v[0]); });
   check_entry_point<T>(
-      "KhanRichardsonExponent::checked",
-      {{"archimedes", 100.0, negative, {0.0}},
-       {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
-      [](const ValuesOf<T>& v) { return settling::KhanRichardsonExponent{v[1]}.checked(v[0]); });
-  check_entry_point<T>("richardson_zaki_velocity",
-                       {{"terminal_velocity", 0.1, negative, {0.0}},
-                        {"voidage", 0.5, outside_voidage, {1.0}},
-                        {"exponent", 4.0, not_positive}},
-                       [](const ValuesOf<T>& v) { return settling::richardson_zaki_velocity(v[0], v[1], v[2], fluidbed::checked); });
+      "richardson_zaki_velocity",
+      {{"terminal_velocity", 0.1, negative, {0.0}},
+       {"voidage", 0.5, outside_voidage, {1.0}},
+       {"exponent", 4.0, not_positive}},
+      [](const ValuesOf<T>& v) { return settling::richardson_zaki_velocity(v[0], v[1], v[2], fluidbed::checked); });
   // u_s ∈ (0, u_t] with u_t = 1: the voidage's own interval.
-  check_entry_point<T>("richardson_zaki_voidage",
-                       {{"superficial_velocity", 0.5, outside_voidage, {1.0}},
-                        {"terminal_velocity", 1.0, not_positive},
-                        {"exponent", 4.0, not_positive}},
-                       [](const ValuesOf<T>& v) { return settling::richardson_zaki_voidage(v[0], v[1], v[2], fluidbed::checked); });
-  check_entry_point<T>("richardson_zaki_terminal_reynolds",
-                       {{"reynolds", 10.0, negative, {0.0}}, {"voidage", 0.5, outside_voidage, {1.0}}},
-                       [](const ValuesOf<T>& v) { return settling::richardson_zaki_terminal_reynolds(v[0], v[1], fluidbed::checked); });
+  check_entry_point<T>(
+      "richardson_zaki_voidage",
+      {{"superficial_velocity", 0.5, outside_voidage, {1.0}},
+       {"terminal_velocity", 1.0, not_positive},
+       {"exponent", 4.0, not_positive}},
+      [](const ValuesOf<T>& v) { return settling::richardson_zaki_voidage(v[0], v[1], v[2], fluidbed::checked); });
+  check_entry_point<T>(
+      "richardson_zaki_terminal_reynolds",
+      {{"reynolds", 10.0, negative, {0.0}}, {"voidage", 0.5, outside_voidage, {1.0}}},
+      [](const ValuesOf<T>& v) { return settling::richardson_zaki_terminal_reynolds(v[0], v[1], fluidbed::checked); });
 }
 
 TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal velocities", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<ArgumentCase> archimedes{{"archimedes", 1e4, negative, {0.0}}};
-  check_entry_point<T>("StokesTerminalVelocity::checked_reynolds", archimedes,
-                       [](const ValuesOf<T>& v) { return single_particle::StokesTerminalVelocity{}.checked_reynolds(v[0]); });
-  check_entry_point<T>("NewtonTerminalVelocity::checked_reynolds", archimedes,
-                       [](const ValuesOf<T>& v) { return single_particle::NewtonTerminalVelocity{}.checked_reynolds(v[0]); });
-  check_entry_point<T>("DallavalleTerminalVelocity::checked_reynolds", archimedes,
-                       [](const ValuesOf<T>& v) { return single_particle::DallavalleTerminalVelocity{}.checked_reynolds(v[0]); });
-  check_entry_point<T>("SchillerNaumannTerminalVelocity::checked_reynolds", archimedes,
-                       [](const ValuesOf<T>& v) { return single_particle::SchillerNaumannTerminalVelocity{}.checked_reynolds(v[0]); });
+  check_entry_point<T>("StokesTerminalVelocity::checked_reynolds", archimedes, [](const ValuesOf<T>& v) {
+    return single_particle::StokesTerminalVelocity{}.checked_reynolds(v[0]);
+  });
+  check_entry_point<T>("NewtonTerminalVelocity::checked_reynolds", archimedes, [](const ValuesOf<T>& v) {
+    return single_particle::NewtonTerminalVelocity{}.checked_reynolds(v[0]);
+  });
+  check_entry_point<T>("DallavalleTerminalVelocity::checked_reynolds", archimedes, [](const ValuesOf<T>& v) {
+    return single_particle::DallavalleTerminalVelocity{}.checked_reynolds(v[0]);
+  });
+  check_entry_point<T>("SchillerNaumannTerminalVelocity::checked_reynolds", archimedes, [](const ValuesOf<T>& v) {
+    return single_particle::SchillerNaumannTerminalVelocity{}.checked_reynolds(v[0]);
+  });
   const auto velocity = [](auto checked) {
     return [checked](const ValuesOf<T>& v) { return checked(fluid_of(v, 0), particles_of(v, 0), v[4]); };
   };
-  check_entry_point<T>("StokesTerminalVelocity::checked", settling_system,
-                       velocity([](auto f, auto p, auto g) { return single_particle::StokesTerminalVelocity{}.checked(f, p, g); }));
-  check_entry_point<T>("NewtonTerminalVelocity::checked", settling_system,
-                       velocity([](auto f, auto p, auto g) { return single_particle::NewtonTerminalVelocity{}.checked(f, p, g); }));
-  check_entry_point<T>("DallavalleTerminalVelocity::checked", settling_system,
-                       velocity([](auto f, auto p, auto g) { return single_particle::DallavalleTerminalVelocity{}.checked(f, p, g); }));
-  check_entry_point<T>("SchillerNaumannTerminalVelocity::checked", settling_system, velocity([](auto f, auto p, auto g) {
+  check_entry_point<T>("StokesTerminalVelocity::checked", settling_system, velocity([](auto f, auto p, auto g) {
+                         return single_particle::StokesTerminalVelocity{}.checked(f, p, g);
+                       }));
+  check_entry_point<T>("NewtonTerminalVelocity::checked", settling_system, velocity([](auto f, auto p, auto g) {
+                         return single_particle::NewtonTerminalVelocity{}.checked(f, p, g);
+                       }));
+  check_entry_point<T>("DallavalleTerminalVelocity::checked", settling_system, velocity([](auto f, auto p, auto g) {
+                         return single_particle::DallavalleTerminalVelocity{}.checked(f, p, g);
+                       }));
+  check_entry_point<T>("SchillerNaumannTerminalVelocity::checked", settling_system,
+                       velocity([](auto f, auto p, auto g) {
                          return single_particle::SchillerNaumannTerminalVelocity{}.checked(f, p, g);
                        }));
 }
@@ -211,11 +223,13 @@ TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal veloci
 TEST_CASE_TEMPLATE("out of domain: minimum fluidization", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<ArgumentCase> bed{{"voidage", 0.4, outside_open_unit}, {"sphericity", 0.75, outside_voidage, {1.0}}};
+  check_entry_point<T>("ErgunMinimumFluidization::checked_reynolds",
+                       concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed), [](const ValuesOf<T>& v) {
+                         return fluidization::ErgunMinimumFluidization{v[1], v[2]}.checked_reynolds(v[0]);
+                       });
   check_entry_point<T>(
-      "ErgunMinimumFluidization::checked_reynolds", concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed),
-      [](const ValuesOf<T>& v) { return fluidization::ErgunMinimumFluidization{v[1], v[2]}.checked_reynolds(v[0]); });
-  check_entry_point<T>("WenYuMinimumFluidization::checked_reynolds", {{"archimedes", 1e4, negative, {0.0}}},
-                       [](const ValuesOf<T>& v) { return fluidization::WenYuMinimumFluidization{}.checked_reynolds(v[0]); });
+      "WenYuMinimumFluidization::checked_reynolds", {{"archimedes", 1e4, negative, {0.0}}},
+      [](const ValuesOf<T>& v) { return fluidization::WenYuMinimumFluidization{}.checked_reynolds(v[0]); });
   check_entry_point<T>(
       "ErgunMinimumFluidization::checked", concatenated(settling_system, bed), [](const ValuesOf<T>& v) {
         return fluidization::ErgunMinimumFluidization{v[5], v[6]}.checked(fluid_of(v, 0), particles_of(v, 0), v[4]);
@@ -231,23 +245,29 @@ TEST_CASE_TEMPLATE("out of domain: bed expansion, voidage ratio, equivalent expo
   const drag::MazzeiLettieri law;
   const std::vector<ArgumentCase> expansion = concatenated({{"superficial_velocity", 5e-3, not_positive}}, settling_system);
   check_entry_point<T>("equilibrium_voidage", expansion, [&](const ValuesOf<T>& v) {
-    return fluidization::equilibrium_voidage(law, v[0], fluid_of(v, 1), particles_of(v, 1), v[5], fluidbed::checked).value();
+    return fluidization::equilibrium_voidage(law, v[0], fluid_of(v, 1), particles_of(v, 1), v[5], fluidbed::checked)
+        .value();
   });
   check_entry_point<T>("equilibrium_voidage (AnyDragLaw)", expansion, [](const ValuesOf<T>& v) {
-    return fluidization::equilibrium_voidage(drag::make_drag_law("WenYu1966"), v[0], fluid_of(v, 1), particles_of(v, 1), v[5], fluidbed::checked).value();
+    return fluidization::equilibrium_voidage(drag::make_drag_law("WenYu1966"), v[0], fluid_of(v, 1), particles_of(v, 1),
+                                             v[5], fluidbed::checked)
+        .value();
   });
   check_entry_point<T>("richardson_zaki_equilibrium_voidage", expansion, [](const ValuesOf<T>& v) {
-    return fluidization::richardson_zaki_equilibrium_voidage(v[0], fluid_of(v, 1), particles_of(v, 1), v[5], fluidbed::checked).value();
+    return fluidization::richardson_zaki_equilibrium_voidage(v[0], fluid_of(v, 1), particles_of(v, 1), v[5],
+                                                             fluidbed::checked)
+        .value();
   });
-  check_entry_point<T>("voidage_ratio",
-                       {{"reynolds", 10.0, not_positive}, {"richardson_zaki_voidage", 0.5, outside_open_unit}},
-                       [&](const ValuesOf<T>& v) { return fluidization::voidage_ratio(law, v[0], v[1], fluidbed::checked).value(); });
-  check_entry_point<T>("equivalent_exponent",
-                       {{"voidage", 0.5, outside_open_unit}, {"reynolds", 10.0, negative, {0.0}}},
-                       [&](const ValuesOf<T>& v) { return fluidization::equivalent_exponent(law, v[0], v[1], fluidbed::checked); });
-  check_entry_point<T>("bed_height",
-                       {{"initial_height", 1.0, not_positive},
-                        {"initial_voidage", 0.4, outside_open_unit},
-                        {"voidage", 0.5, outside_open_unit}},
-                       [](const ValuesOf<T>& v) { return fluidization::bed_height(v[0], v[1], v[2], fluidbed::checked); });
+  check_entry_point<T>(
+      "voidage_ratio", {{"reynolds", 10.0, not_positive}, {"richardson_zaki_voidage", 0.5, outside_open_unit}},
+      [&](const ValuesOf<T>& v) { return fluidization::voidage_ratio(law, v[0], v[1], fluidbed::checked).value(); });
+  check_entry_point<T>(
+      "equivalent_exponent", {{"voidage", 0.5, outside_open_unit}, {"reynolds", 10.0, negative, {0.0}}},
+      [&](const ValuesOf<T>& v) { return fluidization::equivalent_exponent(law, v[0], v[1], fluidbed::checked); });
+  check_entry_point<T>(
+      "bed_height",
+      {{"initial_height", 1.0, not_positive},
+       {"initial_voidage", 0.4, outside_open_unit},
+       {"voidage", 0.5, outside_open_unit}},
+      [](const ValuesOf<T>& v) { return fluidization::bed_height(v[0], v[1], v[2], fluidbed::checked); });
 }

@@ -69,32 +69,47 @@ std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_qua
        [](const Row& r) { return settling::richardson_zaki_voidage(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
       {"richardson_zaki_terminal_reynolds",
        [](const Row& r) { return settling::richardson_zaki_terminal_reynolds(r.in<T>(0), r.in<T>(1)); }},
-      {"terminal_reynolds_stokes", [](const Row& r) { return single_particle::StokesTerminalVelocity{}.reynolds(r.in<T>(0)); }},
-      {"terminal_reynolds_newton", [](const Row& r) { return single_particle::NewtonTerminalVelocity{}.reynolds(r.in<T>(0)); }},
-      {"terminal_reynolds_dallavalle", [](const Row& r) { return single_particle::DallavalleTerminalVelocity{}.reynolds(r.in<T>(0)); }},
+      {"terminal_reynolds_stokes",
+       [](const Row& r) { return single_particle::StokesTerminalVelocity{}.reynolds(r.in<T>(0)); }},
+      {"terminal_reynolds_newton",
+       [](const Row& r) { return single_particle::NewtonTerminalVelocity{}.reynolds(r.in<T>(0)); }},
+      {"terminal_reynolds_dallavalle",
+       [](const Row& r) { return single_particle::DallavalleTerminalVelocity{}.reynolds(r.in<T>(0)); }},
       {"terminal_reynolds_schiller_naumann",
        [](const Row& r) { return single_particle::SchillerNaumannTerminalVelocity{}.reynolds(r.in<T>(0)); }},
       {"terminal_velocity_stokes",
-       [](const Row& r) { return single_particle::StokesTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) {
+         return single_particle::StokesTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+       }},
       {"terminal_velocity_newton",
-       [](const Row& r) { return single_particle::NewtonTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) {
+         return single_particle::NewtonTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+       }},
       {"terminal_velocity_dallavalle",
-       [](const Row& r) { return single_particle::DallavalleTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) {
+         return single_particle::DallavalleTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+       }},
       {"terminal_velocity_schiller_naumann",
-       [](const Row& r) { return single_particle::SchillerNaumannTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
+       [](const Row& r) {
+         return single_particle::SchillerNaumannTerminalVelocity{}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+       }},
       {"minimum_fluidization_velocity_ergun",
        [](const Row& r) {
-         return fluidization::ErgunMinimumFluidization{r.in<T>(4), r.in<T>(5)}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+         return fluidization::ErgunMinimumFluidization{r.in<T>(4), r.in<T>(5)}(fluid_of<T>(r, 0),
+                                                                               particles_of<T>(r, 0));
        }},
       {"minimum_fluidization_reynolds_ergun",
-       [](const Row& r) { return fluidization::ErgunMinimumFluidization{r.in<T>(1), r.in<T>(2)}.reynolds(r.in<T>(0)); }},
+       [](const Row& r) {
+         return fluidization::ErgunMinimumFluidization{r.in<T>(1), r.in<T>(2)}.reynolds(r.in<T>(0));
+       }},
       {"minimum_fluidization_velocity_wen_yu",
        [](const Row& r) { return fluidization::WenYuMinimumFluidization{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
       {"minimum_fluidization_reynolds_wen_yu",
        [](const Row& r) { return fluidization::WenYuMinimumFluidization{}.reynolds(r.in<T>(0)); }},
       {"equilibrium_voidage_RichardsonZaki",
        [](const Row& r) {
-         return required(fluidization::richardson_zaki_equilibrium_voidage(r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
+         return required(
+             fluidization::richardson_zaki_equilibrium_voidage(r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
        }},
       {"bed_height", [](const Row& r) { return fluidization::bed_height(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
   };
@@ -103,8 +118,12 @@ std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_qua
     q["equilibrium_voidage_" + name] = [law](const Row& r) {
       return required(fluidization::equilibrium_voidage(law, r.in<T>(0), fluid_of<T>(r, 1), particles_of<T>(r, 1)));
     };
-    q["voidage_ratio_" + name] = [law](const Row& r) { return required(fluidization::voidage_ratio(law, r.in<T>(0), r.in<T>(1))); };
-    q["equivalent_exponent_" + name] = [law](const Row& r) { return fluidization::equivalent_exponent(law, r.in<T>(0), r.in<T>(1)); };
+    q["voidage_ratio_" + name] = [law](const Row& r) {
+      return required(fluidization::voidage_ratio(law, r.in<T>(0), r.in<T>(1)));
+    };
+    q["equivalent_exponent_" + name] = [law](const Row& r) {
+      return fluidization::equivalent_exponent(law, r.in<T>(0), r.in<T>(1));
+    };
   }
   return q;
 }
@@ -159,7 +178,8 @@ TEST_CASE_TEMPLATE("Syamlal-O'Brien calibrated from minimum fluidization holds t
   const Particles<T> sand{T(2500), T(2.44140625e-4L)};
   for (const auto& state : {std::pair{T(0.4375L), T(0.001953125L)}, std::pair{T(0.875L), T(0.015625L)}}) {
     const T voidage = state.first, velocity = state.second;  // clang < 16 captures no structured binding
-    const drag::SyamlalOBrien law = fluidization::syamlal_obrien_from_minimum_fluidization(velocity, voidage, water, sand);
+    const drag::SyamlalOBrien law =
+        fluidization::syamlal_obrien_from_minimum_fluidization(velocity, voidage, water, sand);
     INFO("eps_mf " << double(voidage) << ": c1 " << law.c1() << ", d1 " << law.d1());
     const T equilibrium = required(fluidization::equilibrium_voidage(law, velocity, water, sand));
     CHECK(test::error_in_epsilons(equilibrium, static_cast<long double>(voidage)) <= chained_tolerance);

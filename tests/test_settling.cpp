@@ -79,9 +79,11 @@ TEST_CASE("every settling quantity agrees with the independent mpmath reference 
     else if (quantity == "terminal_velocity_newton")
       CHECK(single_particle::NewtonTerminalVelocity{}(fluid, particles) == doctest::Approx(expected).epsilon(1e-13));
     else if (quantity == "terminal_velocity_dallavalle")
-      CHECK(single_particle::DallavalleTerminalVelocity{}(fluid, particles) == doctest::Approx(expected).epsilon(1e-13));
+      CHECK(single_particle::DallavalleTerminalVelocity{}(fluid, particles) ==
+            doctest::Approx(expected).epsilon(1e-13));
     else if (quantity == "terminal_velocity_schillernaumann")
-      CHECK(single_particle::SchillerNaumannTerminalVelocity{}(fluid, particles) == doctest::Approx(expected).epsilon(1e-12));
+      CHECK(single_particle::SchillerNaumannTerminalVelocity{}(fluid, particles) ==
+            doctest::Approx(expected).epsilon(1e-12));
     else if (quantity == "umf_ergun")
       CHECK(fluidization::ErgunMinimumFluidization{0.4}(fluid, particles) == doctest::Approx(expected).epsilon(1e-13));
     else if (quantity == "umf_wenyu1966")
@@ -159,7 +161,8 @@ TEST_CASE("dn/dRe_t of eq. 3.24 equals a central difference, the closed form and
   }
   // |Re_t N| = 1.8 x/(1 + x)² <= 0.45 (eq. 3.103), the maximum at x = 0.175 Re_t^¾ = 1.
   const double re_peak = std::pow(1 / 0.175, 4.0 / 3.0);
-  CHECK(re_peak * settling::MazzeiExponent{}.with_derivatives(re_peak).d_argument == doctest::Approx(-0.45).epsilon(1e-14));
+  CHECK(re_peak * settling::MazzeiExponent{}.with_derivatives(re_peak).d_argument ==
+        doctest::Approx(-0.45).epsilon(1e-14));
   CHECK(settling::MazzeiExponent{}.with_derivatives(0.0).d_argument == -std::numeric_limits<double>::infinity());
 }
 
@@ -192,20 +195,23 @@ TEST_CASE("alternative exponents: limits and the published forms") {
   CHECK(settling::RichardsonZaki1954Exponent{0.05}(0.1999) == doctest::Approx(4.65 + 19.5 * 0.05).epsilon(1e-15));
   CHECK(settling::RichardsonZaki1954Exponent{}(0.2) == doctest::Approx(4.35 * std::pow(0.2, -0.03)).epsilon(1e-15));
   CHECK(settling::RichardsonZaki1954Exponent{0.02}(1.0) == doctest::Approx(4.45 + 18 * 0.02).epsilon(1e-15));
-  CHECK(settling::RichardsonZaki1954Exponent{0.1}(200.0) == doctest::Approx(4.45 * std::pow(200.0, -0.1)).epsilon(1e-15));
+  CHECK(settling::RichardsonZaki1954Exponent{0.1}(200.0) ==
+        doctest::Approx(4.45 * std::pow(200.0, -0.1)).epsilon(1e-15));
   CHECK(settling::RichardsonZaki1954Exponent{0.1}(500.0) == 2.39);
   CHECK(settling::RichardsonZaki1954Exponent{}(1e9) == 2.39);
   // The documented jumps at d/D = 0.
-  CHECK(settling::RichardsonZaki1954Exponent{}(0.2) - settling::RichardsonZaki1954Exponent{}(std::nextafter(0.2, 0.0)) ==
+  CHECK(settling::RichardsonZaki1954Exponent{}(0.2) -
+            settling::RichardsonZaki1954Exponent{}(std::nextafter(0.2, 0.0)) ==
         doctest::Approx(-0.0848).epsilon(1e-3));
-  CHECK(settling::RichardsonZaki1954Exponent{}(1.0) - settling::RichardsonZaki1954Exponent{}(std::nextafter(1.0, 0.0)) ==
+  CHECK(settling::RichardsonZaki1954Exponent{}(1.0) -
+            settling::RichardsonZaki1954Exponent{}(std::nextafter(1.0, 0.0)) ==
         doctest::Approx(0.10).epsilon(1e-9));
   // Every correlation decreases with Re_t (Ar) between its limits.
   double previous[5] = {9, 9, 9, 9, 9};
   for (double re = 1e-3; re < 1e6; re *= 1.3) {
     const double now[5] = {settling::MazzeiExponent{}(re), settling::RoweExponent{}(re),
-                           settling::GarsideAlDibouniExponent{}(re),
-                           settling::KhanRichardsonExponent{}(re), settling::RichardsonZaki1954Exponent{}(re)};
+                           settling::GarsideAlDibouniExponent{}(re), settling::KhanRichardsonExponent{}(re),
+                           settling::RichardsonZaki1954Exponent{}(re)};
     for (int i = 0; i < 4; ++i) CHECK(now[i] < previous[i]);
     if (std::abs(re - 1.0) > 0.3) CHECK(now[4] <= previous[4]);  // except the +0.1 jump at Re_t = 1
     std::copy(now, now + 5, previous);
@@ -276,7 +282,8 @@ TEST_CASE("terminal velocities: limits of Dallavalle and Schiller–Naumann") {
   const double u_boulder = single_particle::DallavalleTerminalVelocity{}(water, boulder);
   const double re_boulder = terminal_reynolds(water, boulder.diameter, u_boulder);
   CHECK(u_boulder / u_inertial == doctest::Approx(1 - 4.8 / (0.63 * std::sqrt(re_boulder))).epsilon(1e-5));
-  CHECK(single_particle::DallavalleTerminalVelocity{}.reynolds(1e30) / std::sqrt(4e30 / (3 * 0.3969)) == doctest::Approx(1.0).epsilon(1e-6));
+  CHECK(single_particle::DallavalleTerminalVelocity{}.reynolds(1e30) / std::sqrt(4e30 / (3 * 0.3969)) ==
+        doctest::Approx(1.0).epsilon(1e-6));
   CHECK(single_particle::DallavalleTerminalVelocity{}.reynolds(1e-20) == doctest::Approx(1e-20 / 17.28).epsilon(1e-9));
   CHECK(single_particle::DallavalleTerminalVelocity{}.reynolds(0.0) == 0.0);
   // It solves ¾ C_D Re_t² = Ar.
@@ -287,7 +294,8 @@ TEST_CASE("terminal velocities: limits of Dallavalle and Schiller–Naumann") {
   // Schiller–Naumann: Stokes for small Ar, Newton (exactly) on the 0.44 branch.
   CHECK(single_particle::SchillerNaumannTerminalVelocity{}(water, glass) ==
         doctest::Approx(single_particle::StokesTerminalVelocity{}(water, glass)).epsilon(1e-6));
-  CHECK(single_particle::SchillerNaumannTerminalVelocity{}.reynolds(1e-12) == doctest::Approx(1e-12 / 18).epsilon(1e-12));
+  CHECK(single_particle::SchillerNaumannTerminalVelocity{}.reynolds(1e-12) ==
+        doctest::Approx(1e-12 / 18).epsilon(1e-12));
   CHECK(single_particle::SchillerNaumannTerminalVelocity{}(water, boulder) ==
         doctest::Approx(single_particle::NewtonTerminalVelocity{}(water, boulder)).epsilon(1e-14));
   CHECK(single_particle::NewtonTerminalVelocity{}(water, boulder) ==
@@ -296,7 +304,8 @@ TEST_CASE("terminal velocities: limits of Dallavalle and Schiller–Naumann") {
   for (double ar : {1e-8, 0.3, 80.0, 5e4, 3e5, 3.3e5, 3e7}) {
     const double re = single_particle::SchillerNaumannTerminalVelocity{}.reynolds(ar);
     INFO("Ar = " << ar);
-    CHECK(0.75 * single_particle::SchillerNaumannCoefficient::cd_times_re(re) * re == doctest::Approx(ar).epsilon(1e-14));
+    CHECK(0.75 * single_particle::SchillerNaumannCoefficient::cd_times_re(re) * re ==
+          doctest::Approx(ar).epsilon(1e-14));
   }
 }
 
@@ -322,7 +331,8 @@ TEST_CASE("seed 000 Table 4.4: every row and column, to the tolerance the data s
     const seed000::Tolerance& tol = seed000::tolerance.at(static_cast<std::size_t>(row.system - 1));
     INFO("system " << row.system << ", u = " << row.velocity);
     const auto rz = fluidization::richardson_zaki_equilibrium_voidage(row.velocity, system.fluid, system.particles);
-    const auto ml = fluidization::equilibrium_voidage(drag::MazzeiLettieri{}, row.velocity, system.fluid, system.particles);
+    const auto ml =
+        fluidization::equilibrium_voidage(drag::MazzeiLettieri{}, row.velocity, system.fluid, system.particles);
     const auto wy = fluidization::equilibrium_voidage(wen_yu, row.velocity, system.fluid, system.particles);
     const auto ergun = fluidization::equilibrium_voidage(drag::Ergun{}, row.velocity, system.fluid, system.particles);
     REQUIRE(rz.has_value());
@@ -361,8 +371,9 @@ TEST_CASE("seed 000 Table 4.3 system 3 as printed (d = 521 µm) has no homogeneo
     CHECK(!fluidization::equilibrium_voidage(drag::MazzeiLettieri{}, row.velocity, system.fluid, printed).has_value());
     CHECK(!fluidization::equilibrium_voidage(wen_yu, row.velocity, system.fluid, printed).has_value());
     CHECK(!fluidization::equilibrium_voidage(drag::Ergun{}, row.velocity, system.fluid, printed).has_value());
-    CHECK_THROWS_WITH_AS(fluidization::equilibrium_voidage(wen_yu, row.velocity, system.fluid, printed, fluidbed::checked).value(),
-                         doctest::Contains("no homogeneous bed"), std::domain_error);
+    CHECK_THROWS_WITH_AS(
+        fluidization::equilibrium_voidage(wen_yu, row.velocity, system.fluid, printed, fluidbed::checked).value(),
+        doctest::Contains("no homogeneous bed"), std::domain_error);
   }
 }
 
@@ -370,16 +381,17 @@ TEST_CASE("gas example of seed 000 §4.3.3: ε_R&Z(5.77e-2) = 0.6000, h = 0.45 m
   const double eps = *fluidization::richardson_zaki_equilibrium_voidage(5.77e-2, air_example, fcc_example);
   CHECK(eps == doctest::Approx(0.6000).epsilon(1e-4));
   CHECK(fluidization::bed_height(0.30, 0.4, eps) == doctest::Approx(0.450).epsilon(1e-4));
-  CHECK(fluidization::ErgunMinimumFluidization{0.4}(air_example, fcc_example) == doctest::Approx(8.731e-3).epsilon(1e-4));
+  CHECK(fluidization::ErgunMinimumFluidization{0.4}(air_example, fcc_example) ==
+        doctest::Approx(8.731e-3).epsilon(1e-4));
   // The Richardson & Zaki (1954) liquid of §4.3.3 (eq. 4.4): ε_R&Z(4.70e-4) = 0.5504, h = 0.400 m.
-  const double eps_rz =
-      *fluidization::richardson_zaki_equilibrium_voidage(4.70e-4, Fluid<double>{2170.0, 1.61e-3}, Particles<double>{2620.0, 230e-6});
+  const double eps_rz = *fluidization::richardson_zaki_equilibrium_voidage(4.70e-4, Fluid<double>{2170.0, 1.61e-3},
+                                                                           Particles<double>{2620.0, 230e-6});
   CHECK(eps_rz == doctest::Approx(0.5504).epsilon(2e-4));
   CHECK(fluidization::bed_height(0.30, 0.4, eps_rz) == doctest::Approx(0.400).epsilon(1e-3));
   // §4.6.3: R–Z at 1.55 cm/s gives 0.507 for its stability system.
-  CHECK(
-      *fluidization::richardson_zaki_equilibrium_voidage(1.55e-2, Fluid<double>{1.19, 1.82e-5}, Particles<double>{2500.0, 71.5e-6}) ==
-      doctest::Approx(0.507).epsilon(1e-3));
+  CHECK(*fluidization::richardson_zaki_equilibrium_voidage(1.55e-2, Fluid<double>{1.19, 1.82e-5},
+                                                           Particles<double>{2500.0, 71.5e-6}) ==
+        doctest::Approx(0.507).epsilon(1e-3));
 }
 
 TEST_CASE(
@@ -403,7 +415,8 @@ TEST_CASE(
       const auto by_law = fluidization::equilibrium_voidage(ml, u, liquid, particles, g);
       REQUIRE(by_law.has_value());
       CHECK(*by_law == doctest::Approx(eps).epsilon(1e-10));
-      CHECK(*fluidization::richardson_zaki_equilibrium_voidage(u, liquid, particles, g) == doctest::Approx(eps).epsilon(1e-13));
+      CHECK(*fluidization::richardson_zaki_equilibrium_voidage(u, liquid, particles, g) ==
+            doctest::Approx(eps).epsilon(1e-13));
       worst = std::max(worst, relative_difference(*by_law, eps));
       // and the seed's Figs 3.1–3.5 ratio is 1 (Fig. 3.5).
       const double re = liquid.density * u * particles.diameter / liquid.viscosity;
@@ -446,7 +459,9 @@ TEST_CASE("no homogeneous bed at or above the law's own single-particle terminal
   bounds(wen_yu, single_particle::SchillerNaumannTerminalVelocity{}(water, sand));
   bounds(drag::MazzeiLettieri{}, single_particle::DallavalleTerminalVelocity{}(water, sand));
   bounds(drag::Ergun{}, std::sqrt((sand.density - water.density) * g * sand.diameter / (1.75 * water.density)));
-  CHECK(!fluidization::richardson_zaki_equilibrium_voidage(single_particle::DallavalleTerminalVelocity{}(water, sand), water, sand).has_value());
+  CHECK(!fluidization::richardson_zaki_equilibrium_voidage(single_particle::DallavalleTerminalVelocity{}(water, sand),
+                                                           water, sand)
+             .has_value());
 }
 
 TEST_CASE("a law discontinuous in ε: Gidaspow's switch can hold the bed at its jump, ε = 0.8") {
@@ -457,8 +472,8 @@ TEST_CASE("a law discontinuous in ε: Gidaspow's switch can hold the bed at its 
   REQUIRE(eps.has_value());
   CHECK(*eps == doctest::Approx(0.8).epsilon(1e-12));
   CHECK(*fluidization::equilibrium_voidage(drag::Ergun{}, 0.162, system.fluid, system.particles) > 0.8);
-  CHECK(*fluidization::equilibrium_voidage(drag::ConstantExponentDrag::wen_yu_gidaspow(), 0.162, system.fluid, system.particles) <
-        0.8);
+  CHECK(*fluidization::equilibrium_voidage(drag::ConstantExponentDrag::wen_yu_gidaspow(), 0.162, system.fluid,
+                                           system.particles) < 0.8);
 }
 
 TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage, long double and float agree") {
@@ -471,7 +486,8 @@ TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage, long double an
     const double in_double = *fluidization::equilibrium_voidage(wen_yu, u, system.fluid, system.particles);
     const Fluid<long double> fluid_l{system.fluid.density, system.fluid.viscosity};
     const Particles<long double> particles_l{system.particles.density, system.particles.diameter};
-    const long double in_long = *fluidization::equilibrium_voidage(wen_yu, static_cast<long double>(u), fluid_l, particles_l);
+    const long double in_long =
+        *fluidization::equilibrium_voidage(wen_yu, static_cast<long double>(u), fluid_l, particles_l);
     CHECK(static_cast<double>(in_long) == doctest::Approx(in_double).epsilon(1e-13));
     const Fluid<float> fluid_f{static_cast<float>(system.fluid.density), static_cast<float>(system.fluid.viscosity)};
     const Particles<float> particles_f{static_cast<float>(system.particles.density),
@@ -479,7 +495,8 @@ TEST_CASE("typed laws and drag::AnyDragLaw give the same voidage, long double an
     CHECK(*fluidization::equilibrium_voidage(wen_yu, static_cast<float>(u), fluid_f, particles_f) ==
           doctest::Approx(in_double).epsilon(1e-5));
     CHECK(single_particle::SchillerNaumannTerminalVelocity{}(fluid_f, particles_f) ==
-          doctest::Approx(single_particle::SchillerNaumannTerminalVelocity{}(system.fluid, system.particles)).epsilon(1e-5));
+          doctest::Approx(single_particle::SchillerNaumannTerminalVelocity{}(system.fluid, system.particles))
+              .epsilon(1e-5));
   }
 }
 
@@ -487,7 +504,8 @@ TEST_CASE("below minimum fluidization the law's voidage is below ε_mf, Ergun at
   const Particles<double> sand{.density = 2650.0, .diameter = 4e-4};
   for (double eps_mf : {0.38, 0.4, 0.45}) {
     const double u_mf = fluidization::ErgunMinimumFluidization{eps_mf}(water, sand);
-    CHECK(*fluidization::equilibrium_voidage(drag::Ergun{}, u_mf, water, sand) == doctest::Approx(eps_mf).epsilon(1e-12));
+    CHECK(*fluidization::equilibrium_voidage(drag::Ergun{}, u_mf, water, sand) ==
+          doctest::Approx(eps_mf).epsilon(1e-12));
     CHECK(*fluidization::equilibrium_voidage(drag::Ergun{}, 0.5 * u_mf, water, sand) < eps_mf);
   }
   // Far below u_mf the root lies below the first scan point 1/64 and is still found.
@@ -519,8 +537,10 @@ TEST_CASE("voidage ratio ε_law/ε_R&Z (seed 000 Figs 3.1–3.3): independently 
   check(drag::Ergun{}, 0.8, {1.0192, 0.9950, 1.0015, 1.1522, 1.3959, 1.5591});
   check(wen_yu, 0.4, {0.9860, 1.1209, 1.1386, 1.0754, 0.9648, 0.9989});
   check(wen_yu, 0.8, {1.0015, 0.9827, 0.9927, 0.9957, 0.9425, 1.0093});
-  check(drag::DiFelice<single_particle::SchillerNaumannCoefficient>{}, 0.4, {0.9860, 1.0794, 1.0207, 0.9564, 0.9225, 0.9986});
-  check(drag::DiFelice<single_particle::DallavalleCoefficient>{}, 0.4, {0.9789, 1.0954, 1.0471, 0.9849, 0.9926, 0.9869});
+  check(drag::DiFelice<single_particle::SchillerNaumannCoefficient>{}, 0.4,
+        {0.9860, 1.0794, 1.0207, 0.9564, 0.9225, 0.9986});
+  check(drag::DiFelice<single_particle::DallavalleCoefficient>{}, 0.4,
+        {0.9789, 1.0954, 1.0471, 0.9849, 0.9926, 0.9869});
 }
 
 TEST_CASE("equivalent exponent ψ_e (eq. 3.64)") {
@@ -554,7 +574,8 @@ TEST_CASE("minimum fluidization: Ergun quadratic, its limits and sphericity, Wen
         CHECK(150 * (1 - eps) * re / (e3 * phi * phi) + 1.75 * re * re / (e3 * phi) ==
               doctest::Approx(ar).epsilon(1e-14));
       }
-  CHECK(fluidization::ErgunMinimumFluidization{0.4}.reynolds(1e-12) == doctest::Approx(1e-12 * 0.064 / (150 * 0.6)).epsilon(1e-12));
+  CHECK(fluidization::ErgunMinimumFluidization{0.4}.reynolds(1e-12) ==
+        doctest::Approx(1e-12 * 0.064 / (150 * 0.6)).epsilon(1e-12));
   CHECK(fluidization::ErgunMinimumFluidization{0.4}.reynolds(1e20) ==
         doctest::Approx(std::sqrt(1e20 * 0.064 / 1.75)).epsilon(1e-6));
   // Sphericity enters through the surface–volume diameter φ_s d only.
@@ -566,14 +587,16 @@ TEST_CASE("minimum fluidization: Ergun quadratic, its limits and sphericity, Wen
   for (double ar : {0.1, 50.0, 1e5, 1e8})
     CHECK(fluidization::WenYuMinimumFluidization{}.reynolds(ar) ==
           doctest::Approx(std::sqrt(33.7 * 33.7 + 0.0408 * ar) - 33.7).epsilon(1e-9));
-  CHECK(fluidization::WenYuMinimumFluidization{}.reynolds(1e-14) == doctest::Approx(1e-14 * 0.0408 / 67.4).epsilon(1e-13));
+  CHECK(fluidization::WenYuMinimumFluidization{}.reynolds(1e-14) ==
+        doctest::Approx(1e-14 * 0.0408 / 67.4).epsilon(1e-13));
   CHECK(fluidization::WenYuMinimumFluidization{}(air_example, fcc_example) <
         fluidization::ErgunMinimumFluidization{0.4}(air_example, fcc_example));
 }
 
 TEST_CASE("bed height from voidage") {
   CHECK(fluidization::bed_height(0.30, 0.4, 0.6) == doctest::Approx(0.45).epsilon(1e-15));
-  CHECK(fluidization::bed_height(fluidization::bed_height(0.3, 0.4, 0.7), 0.7, 0.4) == doctest::Approx(0.3).epsilon(1e-15));
+  CHECK(fluidization::bed_height(fluidization::bed_height(0.3, 0.4, 0.7), 0.7, 0.4) ==
+        doctest::Approx(0.3).epsilon(1e-15));
   CHECK(fluidization::bed_height(1.0, 0.5, 0.5, fluidbed::checked) == 1.0);
 }
 
@@ -589,17 +612,19 @@ TEST_CASE("checked entry points throw std::domain_error naming the argument and 
                        doctest::Contains("heavier-than-fluid"), std::domain_error);
   CHECK_THROWS_WITH_AS(single_particle::StokesTerminalVelocity{}.checked(water, {2650.0, -1e-3}),
                        doctest::Contains("'particles.diameter' = -0.001"), std::domain_error);
-  CHECK_THROWS_WITH_AS(single_particle::NewtonTerminalVelocity{}.checked({nan, 1e-3}, sand), doctest::Contains("'fluid.density' = nan"),
-                       std::domain_error);
-  CHECK_THROWS_WITH_AS(single_particle::NewtonTerminalVelocity{}.checked(water, sand, 0.0), doctest::Contains("'gravity' = 0"),
-                       std::domain_error);
-  CHECK(single_particle::DallavalleTerminalVelocity{}.checked(water, sand) == single_particle::DallavalleTerminalVelocity{}(water, sand));
+  CHECK_THROWS_WITH_AS(single_particle::NewtonTerminalVelocity{}.checked({nan, 1e-3}, sand),
+                       doctest::Contains("'fluid.density' = nan"), std::domain_error);
+  CHECK_THROWS_WITH_AS(single_particle::NewtonTerminalVelocity{}.checked(water, sand, 0.0),
+                       doctest::Contains("'gravity' = 0"), std::domain_error);
+  CHECK(single_particle::DallavalleTerminalVelocity{}.checked(water, sand) ==
+        single_particle::DallavalleTerminalVelocity{}(water, sand));
 
   CHECK_THROWS_WITH_AS(fluidization::equilibrium_voidage(drag::Ergun{}, 10.0, water, sand, fluidbed::checked).value(),
                        doctest::Contains("'superficial_velocity' = 10"), std::domain_error);
   CHECK_THROWS_WITH_AS(fluidization::equilibrium_voidage(drag::Ergun{}, -1e-3, water, sand, fluidbed::checked).value(),
                        doctest::Contains("'superficial_velocity' = -0.001"), std::domain_error);
-  CHECK_THROWS_AS(fluidization::equilibrium_voidage(drag::Ergun{}, 1e-3, water, bubble, fluidbed::checked).value(), std::domain_error);
+  CHECK_THROWS_AS(fluidization::equilibrium_voidage(drag::Ergun{}, 1e-3, water, bubble, fluidbed::checked).value(),
+                  std::domain_error);
   CHECK(fluidization::equilibrium_voidage(drag::Ergun{}, 1e-2, water, sand, fluidbed::checked).value() ==
         *fluidization::equilibrium_voidage(drag::Ergun{}, 1e-2, water, sand));
   CHECK_THROWS_WITH_AS(fluidization::richardson_zaki_equilibrium_voidage(10.0, water, sand, fluidbed::checked).value(),
@@ -612,17 +637,17 @@ TEST_CASE("checked entry points throw std::domain_error naming the argument and 
   CHECK_THROWS_AS(settling::GarsideAlDibouniExponent{}.checked(nan), std::domain_error);
   CHECK_THROWS_WITH_AS(settling::RichardsonZaki1954Exponent{1.0}.checked(5.0), doctest::Contains("'wall_ratio' = 1"),
                        std::domain_error);
-  CHECK_THROWS_WITH_AS(settling::KhanRichardsonExponent{0.05}.checked(100.0),
-                       doctest::Contains("'wall_ratio' = 0.05"), std::domain_error);
-  CHECK(settling::KhanRichardsonExponent{0.03}.checked(100.0) ==
-        settling::KhanRichardsonExponent{0.03}(100.0));
+  CHECK_THROWS_WITH_AS(settling::KhanRichardsonExponent{0.05}.checked(100.0), doctest::Contains("'wall_ratio' = 0.05"),
+                       std::domain_error);
+  CHECK(settling::KhanRichardsonExponent{0.03}.checked(100.0) == settling::KhanRichardsonExponent{0.03}(100.0));
   CHECK_THROWS_WITH_AS(settling::richardson_zaki_voidage(0.375, 0.25, 3.0, fluidbed::checked),
                        doctest::Contains("'superficial_velocity' = 0.375"), std::domain_error);
   CHECK_THROWS_AS(settling::richardson_zaki_velocity(0.3, 1.2, 3.0, fluidbed::checked), std::domain_error);
-  CHECK_THROWS_WITH_AS(settling::richardson_zaki_terminal_reynolds(1.0, 0.0, fluidbed::checked), doctest::Contains("'voidage' = 0"),
-                       std::domain_error);
+  CHECK_THROWS_WITH_AS(settling::richardson_zaki_terminal_reynolds(1.0, 0.0, fluidbed::checked),
+                       doctest::Contains("'voidage' = 0"), std::domain_error);
   CHECK_THROWS_WITH_AS(fluidization::ErgunMinimumFluidization(0.4, 1.5).checked(water, sand),
                        doctest::Contains("'sphericity' = 1.5"), std::domain_error);
   CHECK_THROWS_AS(fluidization::WenYuMinimumFluidization{}.checked(water, bubble), std::domain_error);
-  CHECK_THROWS_WITH_AS(fluidization::bed_height(0.3, 0.4, 1.0, fluidbed::checked), doctest::Contains("'voidage' = 1"), std::domain_error);
+  CHECK_THROWS_WITH_AS(fluidization::bed_height(0.3, 0.4, 1.0, fluidbed::checked), doctest::Contains("'voidage' = 1"),
+                       std::domain_error);
 }

@@ -28,10 +28,10 @@ const Fluid<double> water{.density = 998.0, .viscosity = 1.0e-3};
 const Particles<double> sand{.density = 2650.0, .diameter = 0.5e-3};
 const Particles<double> bubble{.density = 1.2, .diameter = 1e-3};
 
+using fluidization::MinimumFluidizations;
+using settling::RichardsonZakiExponents;
 using single_particle::DragCoefficients;
 using single_particle::TerminalVelocities;
-using settling::RichardsonZakiExponents;
-using fluidization::MinimumFluidizations;
 
 static_assert(DragCoefficients::names_are_unique());
 static_assert(TerminalVelocities::names_are_unique());
@@ -101,17 +101,17 @@ TEST_CASE("registries of single_particle, settling and fluidization: lookup, unk
 
 TEST_CASE("names are unique across these registries and the drag laws, and are the types' names") {
   std::vector<std::string> all;
-  for (const auto& names : {names_of<DragCoefficients>(), names_of<TerminalVelocities>(),
-                            names_of<RichardsonZakiExponents>(), names_of<MinimumFluidizations>(),
-                            names_of<drag::DragLaws>()})
+  for (const auto& names :
+       {names_of<DragCoefficients>(), names_of<TerminalVelocities>(), names_of<RichardsonZakiExponents>(),
+        names_of<MinimumFluidizations>(), names_of<drag::DragLaws>()})
     all.insert(all.end(), names.begin(), names.end());
   CHECK(std::set<std::string>(all.begin(), all.end()).size() == all.size());
-  CHECK(names_of<TerminalVelocities>() ==
-        std::vector<std::string>{"StokesTerminalVelocity", "NewtonTerminalVelocity", "DallavalleTerminalVelocity",
-                                 "SchillerNaumannTerminalVelocity"});
-  CHECK(names_of<RichardsonZakiExponents>() ==
-        std::vector<std::string>{"MazzeiExponent", "RichardsonZaki1954Exponent", "RoweExponent",
-                                 "KhanRichardsonExponent", "GarsideAlDibouniExponent"});
+  CHECK(names_of<TerminalVelocities>() == std::vector<std::string>{"StokesTerminalVelocity", "NewtonTerminalVelocity",
+                                                                   "DallavalleTerminalVelocity",
+                                                                   "SchillerNaumannTerminalVelocity"});
+  CHECK(names_of<RichardsonZakiExponents>() == std::vector<std::string>{"MazzeiExponent", "RichardsonZaki1954Exponent",
+                                                                        "RoweExponent", "KhanRichardsonExponent",
+                                                                        "GarsideAlDibouniExponent"});
 }
 
 TEST_CASE("a user's own law extends a registry") {
@@ -140,10 +140,12 @@ TEST_CASE("checked entry points name the closure and the argument") {
     std::visit(
         [](const auto& law) {
           const std::string name(law.name());
-          CHECK(test::domain_error_message([&] { (void)law.checked_reynolds(-1.0); })
-                    .find("fluidbed::" + name + ": argument 'archimedes' = -1") == 0);
-          CHECK(test::domain_error_message([&] { (void)law.checked(water, bubble); })
-                    .find("fluidbed::" + name + ": argument 'particles.density' = 1.2") == 0);
+          CHECK(test::domain_error_message([&] {
+                  (void)law.checked_reynolds(-1.0);
+                }).find("fluidbed::" + name + ": argument 'archimedes' = -1") == 0);
+          CHECK(test::domain_error_message([&] {
+                  (void)law.checked(water, bubble);
+                }).find("fluidbed::" + name + ": argument 'particles.density' = 1.2") == 0);
           CHECK_THROWS_AS((void)law.checked_with_derivatives(test::inf), std::domain_error);
           CHECK(law.checked(water, sand) == law(water, sand));
         },
@@ -161,8 +163,9 @@ TEST_CASE("checked entry points name the closure and the argument") {
   for (const auto& any : MinimumFluidizations::all())
     std::visit(
         [](const auto& law) {
-          CHECK(test::domain_error_message([&] { (void)law.checked_reynolds(-1.0); })
-                    .find("fluidbed::" + std::string(law.name()) + ": argument 'archimedes' = -1") == 0);
+          CHECK(test::domain_error_message([&] {
+                  (void)law.checked_reynolds(-1.0);
+                }).find("fluidbed::" + std::string(law.name()) + ": argument 'archimedes' = -1") == 0);
           CHECK(law.checked(water, sand) == law(water, sand));
         },
         any);
@@ -220,8 +223,7 @@ TEST_CASE("with_derivatives: the hot path's value and a central finite differenc
         any);
   // With a wall ratio: the parameter enters the kernel, not the derivative's variable.
   const settling::KhanRichardsonExponent walled(0.02);
-  CHECK(walled.with_derivatives(500.0).d_argument ==
-        doctest::Approx(central_difference(walled, 500.0)).epsilon(1e-6));
+  CHECK(walled.with_derivatives(500.0).d_argument == doctest::Approx(central_difference(walled, 500.0)).epsilon(1e-6));
   for (const auto& any : MinimumFluidizations::all())
     std::visit(
         [](const auto& law) {

@@ -34,10 +34,10 @@ struct DragFamily {
 
 // The registry of the family: every law, each preset included (registry.hpp). Extend it
 // with a law of your own: `using MyDragLaws = DragLaws::with<MyLaw>;`.
-using DragLaws = Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
-                          DiFelice<single_particle::DallavalleCoefficient>,
-                          DiFelice<single_particle::SchillerNaumannCoefficient>, MazzeiLettieri,
-                          VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
+using DragLaws =
+    Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
+             DiFelice<single_particle::DallavalleCoefficient>, DiFelice<single_particle::SchillerNaumannCoefficient>,
+             MazzeiLettieri, VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
 
 using AnyDragLaw = DragLaws::Variant;
 

@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "../core/constants.hpp"
-#include "drag_law.hpp"
 #include "../single_particle/drag_coefficient.hpp"
+#include "drag_law.hpp"
 
 namespace fluidbed::drag {
 
@@ -31,7 +31,8 @@ struct DiFelice : DragLaw<DiFelice<Coefficient>> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
   constexpr std::string_view name() const {
-    if constexpr (std::is_same_v<Coefficient, single_particle::DallavalleCoefficient>) return "DiFeliceDallavalle";
+    if constexpr (std::is_same_v<Coefficient, single_particle::DallavalleCoefficient>)
+      return "DiFeliceDallavalle";
     else return "DiFeliceSchillerNaumann";
   }
   constexpr std::string_view reference() const {

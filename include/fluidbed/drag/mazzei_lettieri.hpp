@@ -65,8 +65,9 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
       using std::exp;
       using std::log;
       const T log_re_star = log(re_star);
-      const T slope =
-          T(1) + re_star * settling::MazzeiExponent{}.exponent(Dual<T, 1>::variable(re_star, 0)).derivative[0] * T(log(value_of(voidage)));
+      const T slope = T(1) + re_star *
+                                 settling::MazzeiExponent{}.exponent(Dual<T, 1>::variable(re_star, 0)).derivative[0] *
+                                 T(log(value_of(voidage)));
       const S residual = log_re_star + settling::MazzeiExponent{}.exponent(re_star) * log(voidage) - log(re);
       S result = exp(log_re_star - residual / slope);
       result.value = re_star;  // the same value as the plain evaluation, bit for bit
@@ -159,7 +160,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
     const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(T(4.8L));
-    S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) * pow(voidage, 1 - exponent);
+    S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
+             pow(voidage, 1 - exponent);
     if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
       if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
     return beta;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "drag_law.hpp"
 #include "../single_particle/drag_coefficient.hpp"
+#include "drag_law.hpp"
 
 namespace fluidbed::drag {
 
@@ -70,8 +70,8 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
                                      const T& diameter) const {
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
-    return single_particle::unhindered_beta(single_particle::SchillerNaumannCoefficient::cd_times_re(re), voidage, fluid.viscosity,
-                                        diameter) *
+    return single_particle::unhindered_beta(single_particle::SchillerNaumannCoefficient::cd_times_re(re), voidage,
+                                            fluid.viscosity, diameter) *
            pow(voidage, T(-exponent_));
   }
 

@@ -29,12 +29,12 @@ namespace fluidbed::fluidization {
 // the settling system's), when u_mf is so small that B ≤ 0 (V_r ≤ A/(1 + 0.06 Re_t)), and when
 // the data imply c1 or d1 beyond the floating-point range.
 template <class T>
-drag::SyamlalOBrien syamlal_obrien_from_minimum_fluidization(const T& velocity, const T& voidage,
-                                                             const Fluid<T>& fluid, const Particles<T>& particles,
+drag::SyamlalOBrien syamlal_obrien_from_minimum_fluidization(const T& velocity, const T& voidage, const Fluid<T>& fluid,
+                                                             const Particles<T>& particles,
                                                              const T& gravity = standard_gravity_as<T>()) {
+  using drag::SyamlalOBrien;
   using std::log;
   using std::pow;
-  using drag::SyamlalOBrien;
   constexpr std::string_view function = "syamlal_obrien_from_minimum_fluidization";
   require_within(function,
                  join(arguments(Argument<T>{"minimum_fluidization_velocity", velocity, domains::positive<T>()},

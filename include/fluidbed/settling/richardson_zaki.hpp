@@ -198,9 +198,7 @@ struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exp
 struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
   static constexpr std::string_view argument = "terminal_reynolds";
   constexpr std::string_view name() const { return "RoweExponent"; }
-  constexpr std::string_view reference() const {
-    return "Rowe, P.N. (1987) Chem. Eng. Sci. 42, 2795-2796";
-  }
+  constexpr std::string_view reference() const { return "Rowe, P.N. (1987) Chem. Eng. Sci. 42, 2795-2796"; }
   constexpr Validity<1> validity() const {
     return {{{"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}}};
   }
@@ -320,12 +318,11 @@ FLUIDBED_HOST_DEVICE S richardson_zaki_voidage(const S& superficial_velocity,
                                                const std::type_identity_t<S>& exponent, Policy policy = {}) {
   using std::pow;
   using T = value_type_of<S>;
-  check_domain(
-      policy, "richardson_zaki_voidage",
-      arguments(Argument<T>{"terminal_velocity", value_of(terminal_velocity), domains::positive<T>()},
-                Argument<T>{"superficial_velocity", value_of(superficial_velocity),
-                            domains::half_open(T(0), T(value_of(terminal_velocity)))},
-                Argument<T>{"exponent", value_of(exponent), domains::positive<T>()}));
+  check_domain(policy, "richardson_zaki_voidage",
+               arguments(Argument<T>{"terminal_velocity", value_of(terminal_velocity), domains::positive<T>()},
+                         Argument<T>{"superficial_velocity", value_of(superficial_velocity),
+                                     domains::half_open(T(0), T(value_of(terminal_velocity)))},
+                         Argument<T>{"exponent", value_of(exponent), domains::positive<T>()}));
   return pow(superficial_velocity / terminal_velocity, 1 / exponent);
 }
 
@@ -361,7 +358,8 @@ struct TerminalReynoldsSolution {
 // fluidized bed's states, at most 4.
 // Preconditions: Re > 0, ε ∈ (0, 1], both finite.
 template <class T>
-FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_reynolds(const T& reynolds, const T& voidage) {
+FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_reynolds(const T& reynolds,
+                                                                                         const T& voidage) {
   using std::abs;
   using std::cbrt;
   using std::exp;

@@ -31,8 +31,8 @@ namespace fluidbed::single_particle {
 // C_D·Re and its slope in Re.
 template <class T>
 struct DragCoefficientWithDerivative {
-  T value;        // C_D·Re
-  T d_reynolds;   // d(C_D·Re)/dRe
+  T value;       // C_D·Re
+  T d_reynolds;  // d(C_D·Re)/dRe
 };
 
 // The domain of Re, declared once: finite and >= 0.
@@ -85,9 +85,7 @@ struct SphereDragCoefficient {
 struct StokesCoefficient : SphereDragCoefficient<StokesCoefficient> {
   static constexpr double reynolds_max = 0.1;
   constexpr std::string_view name() const { return "StokesCoefficient"; }
-  constexpr std::string_view reference() const {
-    return "Stokes, G.G. (1851) Trans. Camb. Philos. Soc. 9, 8-106";
-  }
+  constexpr std::string_view reference() const { return "Stokes, G.G. (1851) Trans. Camb. Philos. Soc. 9, 8-106"; }
   constexpr Validity<1> validity() const { return {{{"reynolds", 0.0, reynolds_max}}}; }
 
   template <class S>

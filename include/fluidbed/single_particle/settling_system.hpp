@@ -25,7 +25,7 @@ namespace fluidbed::single_particle {
 // homogeneous suspension (elastic/) asserts (hot path) or checks (require_within).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr Arguments<T, 5> settling_domain(const Fluid<T>& fluid, const Particles<T>& particles,
-                                                              const T& gravity) {
+                                                               const T& gravity) {
   return {{{"fluid.density", fluid.density, domains::positive<T>()},
            {"fluid.viscosity", fluid.viscosity, domains::positive<T>()},
            {"particles.diameter", particles.diameter, domains::positive<T>()},
@@ -50,8 +50,8 @@ FLUIDBED_HOST_DEVICE constexpr T velocity_from_reynolds(const T& reynolds, const
 // Re and dRe/dAr.
 template <class T>
 struct ReynoldsWithDerivative {
-  T value;          // Re
-  T d_archimedes;   // dRe/dAr
+  T value;         // Re
+  T d_archimedes;  // dRe/dAr
 };
 
 // CRTP base of the correlations Re(Ar). Law provides name(), reference(), validity(),

@@ -48,8 +48,8 @@ struct SchillerNaumannTerminalVelocity : ArchimedesCorrelation<SchillerNaumannTe
     const T re = reynolds_of_archimedes(archimedes);
     if (re == T(0)) return {re, T(1) / 18};  // the Stokes limit, where (C_D Re)' = ∞ meets Re = 0
     // ¾ (C_D Re)(Re) · Re = Ar, differentiated in Re.
-    const Dual<T, 1> force = SchillerNaumannCoefficient::cd_times_re(Dual<T, 1>::variable(re, 0)) *
-                             Dual<T, 1>::variable(re, 0);
+    const Dual<T, 1> force =
+        SchillerNaumannCoefficient::cd_times_re(Dual<T, 1>::variable(re, 0)) * Dual<T, 1>::variable(re, 0);
     return {re, T(1) / (T(0.75) * force.derivative[0])};
   }
 };

@@ -35,9 +35,7 @@ namespace fluidbed::single_particle {
 // (seed 000 eq. 3.37). Valid for Re_t <~ 0.1.
 struct StokesTerminalVelocity : ArchimedesCorrelation<StokesTerminalVelocity> {
   constexpr std::string_view name() const { return "StokesTerminalVelocity"; }
-  constexpr std::string_view reference() const {
-    return "Stokes, G.G. (1851) Trans. Camb. Philos. Soc. 9, 8-106";
-  }
+  constexpr std::string_view reference() const { return "Stokes, G.G. (1851) Trans. Camb. Philos. Soc. 9, 8-106"; }
   constexpr Validity<1> validity() const { return {{{"terminal_reynolds", 0.0, 0.1}}}; }
 
   template <class S>
