@@ -8,6 +8,8 @@
 //                      the algebraic granular temperature, with β from the Wen–Yu drag:
 //                      everything a cell needs
 //   drag/WenYu1966     the baseline
+//   g0/<name>          every radial distribution of the registry RadialDistributions, with
+//                      dg0/dφ (g0.with_derivatives)
 //
 // Sets: Gidaspow (Ogawa g0, φ_max 0.63, Lun pressure, Gidaspow μ and κ), Fluent (seed 001's
 // choice: Ogawa g0, Syamlal μ and κ), HrenyaSinclair (Carnahan–Starling g0).
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "fluidbed/drag/wen_yu.hpp"
@@ -108,6 +111,22 @@ void register_set(const std::string& name, Set set) {
   benchmark::RegisterBenchmark(("full/" + name).c_str(), [set](benchmark::State& s) { full(s, set); });
 }
 
+// Every registered radial distribution, g0 with its slope.
+void register_radial_distributions() {
+  std::apply(
+      [](const auto&... rdf) {
+        (benchmark::RegisterBenchmark(("g0/" + std::string(rdf.name())).c_str(),
+                                      [rdf](benchmark::State& s) {
+                                        over_cells(s, [&](const Cell& c) {
+                                          const auto g = rdf.with_derivatives(c.solid_fraction);
+                                          return g.value + g.d_solid_fraction;
+                                        });
+                                      }),
+         ...);
+      },
+      RadialDistributions::instances());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -116,6 +135,7 @@ int main(int argc, char** argv) {
   register_set("Fluent", ConstitutiveSet{Ogawa{0.63}, LunPressure{}, SyamlalViscosity{}, SyamlalConductivity{}});
   register_set("HrenyaSinclair", ConstitutiveSet{CarnahanStarling{}, LunPressure{}, HrenyaSinclairViscosity(0.1),
                                                  HrenyaSinclairConductivity(0.1)});
+  register_radial_distributions();
   benchmark::Initialize(&argc, argv);
   fluidbed::bench::RatioReporter reporter(cells);
   benchmark::RunSpecifiedBenchmarks(&reporter);
