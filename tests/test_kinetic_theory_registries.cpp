@@ -304,3 +304,16 @@ TEST_CASE("solid-solid drag: finite, with_derivatives, checked") {
     check_message(std::string(law.name()), "phi_p", [&] { law.checked(-0.5, 0.1, small, large, 0.9, 2.0, 0.1); });
   });
 }
+
+TEST_CASE("a ConstitutiveSet has the same entry points: checked_with_derivatives equals with_derivatives") {
+  const ConstitutiveSet set{Ogawa{0.63}, LunPressure{}, HrenyaSinclairViscosity(0.05), SyamlalConductivity{}};
+  const auto d = set.with_derivatives(phi, theta, material);
+  const auto c = set.checked_with_derivatives(phi, theta, material);
+  CHECK(c.pressure.d_solid_fraction == d.pressure.d_solid_fraction);
+  CHECK(c.shear_viscosity.d_granular_temperature == d.shear_viscosity.d_granular_temperature);
+  CHECK(test::domain_error_message([&] { set.checked_with_derivatives(1.0, theta, material); })
+            .find("fluidbed::kinetic_theory::ConstitutiveSet: argument 'solid_fraction' = 1") == 0);
+  const ConstitutiveSet bad{Ogawa{0.63}, LunPressure{}, HrenyaSinclairViscosity(-1.0), SyamlalConductivity{}};
+  CHECK(test::domain_error_message([&] { bad.checked_with_derivatives(phi, theta, material); })
+            .find("'length_scale' = -1") != std::string::npos);
+}

@@ -77,9 +77,14 @@ struct ConstitutiveSet {
   // argument and its value), then evaluates.
   template <class T>
   ConstitutiveValues<T> checked(const T& phi, const T& theta, const GranularMaterial<T>& m) const {
-    require_within(checked_function, argument_domain(phi, theta, m));
-    require_laws_parameters();
+    require_valid(phi, theta, m);
     return (*this)(phi, theta, m);
+  }
+  template <class T>
+  ConstitutiveValues<ValueAndDerivatives<T>> checked_with_derivatives(const T& phi, const T& theta,
+                                                                      const GranularMaterial<T>& m) const {
+    require_valid(phi, theta, m);
+    return with_derivatives(phi, theta, m);
   }
 
   // The local-equilibrium Θ with these laws (algebraic_temperature.hpp); with fluidbed::checked
@@ -109,6 +114,12 @@ struct ConstitutiveSet {
 
  private:
   static constexpr std::string_view checked_function = "kinetic_theory::ConstitutiveSet";
+
+  template <class T>
+  void require_valid(const T& phi, const T& theta, const GranularMaterial<T>& m) const {
+    require_within(checked_function, argument_domain(phi, theta, m));
+    require_laws_parameters();
+  }
 
   void require_laws_parameters() const {
     detail::require_parameters(checked_function, radial_distribution);
