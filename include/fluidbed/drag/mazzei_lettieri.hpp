@@ -65,9 +65,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
       using std::exp;
       using std::log;
       const T log_re_star = log(re_star);
-      const T slope = T(1) + re_star *
-                                 settling::MazzeiExponent{}.exponent(Dual<T, 1>::variable(re_star, 0)).derivative[0] *
-                                 T(log(value_of(voidage)));
+      const T slope = T(1) + re_star * settling::MazzeiExponent::slope(re_star) * T(log(value_of(voidage)));
       const S residual = log_re_star + settling::MazzeiExponent{}.exponent(re_star) * log(voidage) - log(re);
       S result = exp(log_re_star - residual / slope);
       result.value = re_star;  // the same value as the plain evaluation, bit for bit

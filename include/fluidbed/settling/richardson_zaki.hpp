@@ -51,7 +51,8 @@ struct ExponentWithDerivative {
 // and, if it has parameters (d/D), `template <class T> Arguments<T, N> parameter_domain() const`.
 // The base gives
 //   law(x)                          n (hot path; x >= 0 and the parameters asserted in debug builds)
-//   law.with_derivatives(x)         n and dn/dx, through Dual on the kernel
+//   law.with_derivatives(x)         n and dn/dx, through Dual on the kernel (or the law's
+//                                   `static S slope(x)` where its source gives dn/dx in closed form)
 //   law.checked(x), law.checked_with_derivatives(x)   throw std::domain_error naming the
 //                                   first argument outside its domain.
 // A host holding a RichardsonZakiExponents::Variant reads `argument` to know which number to pass.
@@ -75,8 +76,13 @@ struct RichardsonZakiExponent {
 
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr ExponentWithDerivative<T> with_derivatives(const T& x) const {
-    const Dual<T, 1> n = (*this)(Dual<T, 1>::variable(x, 0));
-    return {n.value, n.derivative[0]};
+    if constexpr (requires { Law::slope(x); }) {  // a law whose source gives dn/dx in closed form
+      FLUIDBED_EXPECTS(within(domain(x)));
+      return {self().exponent(x), Law::slope(x)};
+    } else {
+      const Dual<T, 1> n = (*this)(Dual<T, 1>::variable(x, 0));
+      return {n.value, n.derivative[0]};
+    }
   }
 
   template <class T>
@@ -104,7 +110,7 @@ struct RichardsonZakiExponent {
 // Richardson (1989) and Gibilaro (2001). Together with Dallavalle's terminal velocity it is
 // the expansion law the Mazzei–Lettieri drag reproduces exactly (seed 000 §3.4.5).
 // dn/dRe_t = −0.315 Re_t^−¼ / (1 + 0.175 Re_t^¾)² (seed 000 eq. 3.103, the function N of
-// Table 3.1 in simplified form), −∞ at Re_t = 0.
+// Table 3.1 in simplified form), −∞ at Re_t = 0: `slope`, which with_derivatives returns.
 // Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
 // Validity: every Re_t >= 0, by construction between the two limits.
 struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
@@ -138,6 +144,17 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
   template <class S>
   FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
     return of_scaled_power(scaled_power(terminal_reynolds));
+  }
+
+  // dn/dRe_t in the closed form of seed 000 eq. 3.103, −0.315 Re_t^−¼/(1 + 0.175 Re_t^¾)²
+  // (0.315 = ¾ · 0.175 · 2.4): what with_derivatives returns, and, without its assertion, the
+  // slope the Mazzei–Lettieri drag's Newton step for Re* takes. −∞ at Re_t = 0, 0 at +∞.
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S slope(const S& terminal_reynolds) {
+    using std::pow;
+    using T = value_type_of<S>;
+    const S one_plus_x = 1 + scaled_power(terminal_reynolds);
+    return T(-0.315L) * pow(terminal_reynolds, T(-0.25)) / (one_plus_x * one_plus_x);
   }
 };
 
