@@ -99,7 +99,7 @@ TEST_CASE_TEMPLATE("out of domain: one-class radial distribution functions and t
   check_radial_distribution<T>("Ogawa", packing, [](const ValuesOf<T>& v) { return Ogawa(v[1], v[2]); });
   check_radial_distribution<T>("SinclairJackson", packing,
                                [](const ValuesOf<T>& v) { return SinclairJackson(v[1], v[2]); });
-  check_radial_distribution<T>("Gidaspow", packing,
+  check_radial_distribution<T>("GidaspowRadialDistribution", packing,
                                [](const ValuesOf<T>& v) { return GidaspowRadialDistribution(v[1], v[2]); });
   check_radial_distribution<T>("MaAhmadi", {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}})}},
                                [](const ValuesOf<T>& v) { return MaAhmadi{parameter(v, 1)}; });
