@@ -341,7 +341,7 @@ void polydisperse(Input& in) {
   }
   const MixtureMoments<T> moments = mixture_moments(s.mixture);
   const DragCoefficient<T> mono =
-      Beetstra2007{}(DragState<T>{T(1) - moments.solids_fraction, s.slip, s.fluid, moments.sauter_diameter});
+      Beetstra2007{}(DragState<T>{T(1) - moments.solid_fraction, s.slip, s.fluid, moments.sauter_diameter});
   const T tolerance = T(64) * T(mix.count) * std::numeric_limits<T>::epsilon();
   FUZZ_CHECK(close(sum.pressure_gradient, mono.pressure_gradient(), tolerance, mono.pressure_gradient()),
              "BeetstraPolydisperse: species sum %.17g != monodisperse %.17g (pressure_gradient), %zu species",

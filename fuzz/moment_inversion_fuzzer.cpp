@@ -837,7 +837,7 @@ void count_checks(Input& in, const Problem<T>& p) {
              "scale_moments: %zu moments into %zu entries returned %d", count, out.size(), int(scaled));
   if (count < 2) FUZZ_CHECK(std::isnan(d43(set)), "d43 of %zu moments is not NaN", count);
   if (count < 3) FUZZ_CHECK(std::isnan(variance(set)), "variance of %zu moments is not NaN", count);
-  if (count < 1) FUZZ_CHECK(std::isnan(solids_volume_fraction(set)), "solids_volume_fraction of no moment is not NaN");
+  if (count < 1) FUZZ_CHECK(std::isnan(solid_fraction(set)), "solid_fraction of no moment is not NaN");
   const bool converted = vdf_from_ndf_moments(set, std::span<T>(out));
   FUZZ_CHECK(converted == (count >= out.size()) && (converted || all_nan(std::span<const T>(out))),
              "vdf_from_ndf_moments: %zu into %zu returned %d", count, out.size(), int(converted));

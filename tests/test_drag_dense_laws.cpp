@@ -422,12 +422,12 @@ TEST_CASE("Beetstra polydisperse: mixture moments and correction factors (the in
   for (const Row& r : rows) {
     const auto m = mixture(r.phi, r.d);
     const auto moments = mixture_moments<double>(m);
-    const double eps = 1.0 - moments.solids_fraction;
+    const double eps = 1.0 - moments.solid_fraction;
     CHECK(moments.sauter_diameter == doctest::Approx(r.sauter).epsilon(1e-9));
     double sum_cubic = 0, sum_plain = 0, sum_pg = 0;
     for (std::size_t i = 0; i < 2; ++i) {
       const double y = r.d[i] / moments.sauter_diameter;
-      const double x = r.phi[i] / moments.solids_fraction;
+      const double x = r.phi[i] / moments.solid_fraction;
       CHECK(y == doctest::Approx(r.y[i]).epsilon(1e-14));
       const auto cubic = BeetstraPolydisperse::published().correction(eps, y);
       const auto plain = BeetstraPolydisperse::without_cubic_term().correction(eps, y);
@@ -468,7 +468,7 @@ TEST_CASE("Beetstra polydisperse: monodisperse, split and total-drag identities"
     // (model A always, model B without the y³ term), and model B = model A + φ_i/ε Σ_j model A.
     const auto m = mixture({0.25, 0.05, 0.1}, {3e-4, 1.2e-3, 6e-4});
     const auto moments = mixture_moments<double>(m);
-    const double eps = 1 - moments.solids_fraction;
+    const double eps = 1 - moments.solid_fraction;
     const auto at_mean = Beetstra2007{}(state(eps, w, air, moments.sauter_diameter));
     double total_pg = 0, total_cl = 0;
     for (std::size_t i = 0; i < m.size(); ++i) {

@@ -273,8 +273,8 @@ TEST_CASE("moment-set helpers: mismatched spans give false and NaN, too few mome
   CHECK(std::isnan(d43<double>(one)));
   CHECK(d43<double>(two) == doctest::Approx(1e-4));
   CHECK(std::isnan(variance<double>(two)));
-  CHECK(std::isnan(solids_volume_fraction(std::span<const double>())));
-  CHECK(solids_volume_fraction<double>(one) == 0.6);
+  CHECK(std::isnan(solid_fraction(std::span<const double>())));
+  CHECK(solid_fraction<double>(one) == 0.6);
 
   std::array<double, 3> vdf{}, ndf{};
   const std::array<double, 2> short_input{1, 2};

@@ -78,7 +78,7 @@ TEST_CASE("sieve moments of a 45–150 µm cut: M_0 … M_7, d43, d32, variance 
   CHECK(variance<double>(m) == doctest::Approx(474.3860417).epsilon(1e-10));
   // Geldart (seed 000 eq. 6.1, arithmetic bin means): 0.25% above M_0/M_{−1}.
   CHECK(geldart_sauter_diameter(sieve) == doctest::Approx(79.68309071).epsilon(1e-10));
-  CHECK(solids_volume_fraction<double>(m) == doctest::Approx(0.6).epsilon(1e-15));
+  CHECK(solid_fraction<double>(m) == doctest::Approx(0.6).epsilon(1e-15));
 }
 
 TEST_CASE("sieve moments: narrow bins lose nothing to cancellation, for every order") {

@@ -386,7 +386,7 @@ TEST_CASE_TEMPLATE("types: moment_set.hpp — quadrature moments, mean diameters
   CHECK(close(mean_diameter<T>(5, 3, [&](int k) { return quadrature_moment(q, k); }), T(2.5), 4));  // √(M_2/M_0)
   CHECK(d43<T>(m) == ratio<T>(9, 4));
   CHECK(variance<T>(m) == ratio<T>(19, 16));
-  CHECK(solids_volume_fraction<T>(m) == T(1));
+  CHECK(solid_fraction<T>(m) == T(1));
   const T pi = T(3.14159265358979323846264338327950288L);
   CHECK(close(class_number_density(T(0.5), T(2)), T(3) / (T(8) * pi), 4));  // 6φ/(πξ³) = 3/(8π)
   std::array<T, 6> ndf{}, vdf{};

@@ -4,11 +4,9 @@
 // also serve Boost.Multiprecision and automatic-differentiation types. For a built-in type each
 // is a 36-digit long double literal rounded once to T (to 64 bits, then to T for float and
 // double), so that a long double evaluation gets every digit of its type and a float one stays
-// in float. A type constructible from a decimal string (Boost.Multiprecision) is given 64
-// digits, so that a 50-digit evaluation gets a 50-digit π, not long double's.
+// in float. A Boost.Multiprecision number is given 64 digits, so that a 50-digit evaluation
+// gets a 50-digit π, not long double's.
 #pragma once
-
-#include <type_traits>
 
 #include "config.hpp"
 
@@ -16,13 +14,15 @@ namespace fluidbed::numbers {
 
 namespace detail {
 
-// `digits` (64 significant digits) for a type that parses decimal strings, else `rounded`.
+// `digits` (64 significant digits) for a Boost.Multiprecision number (recognised by its
+// backend_type, without including Boost), else `rounded`. (Other wrappers, autodiff types
+// among them, may accept a string in overload resolution without parsing one.)
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T constant(long double rounded, const char* digits) {
-  if constexpr (std::is_floating_point_v<T> || !std::is_constructible_v<T, const char*>)
-    return T(rounded);
-  else
+  if constexpr (requires { typename T::backend_type; })
     return T(digits);
+  else
+    return T(rounded);
 }
 
 }  // namespace detail

@@ -39,7 +39,7 @@ struct PolydisperseDragState {
 // The moments of a mixture the correction needs.
 template <class T>
 struct MixtureMoments {
-  T solids_fraction;  // φ = Σ_j φ_j
+  T solid_fraction;  // φ = Σ_j φ_j
   T sauter_diameter;  // <d> = 1 / Σ_j (x_j / d_j), x_j = φ_j / φ
 };
 
@@ -250,7 +250,7 @@ class BeetstraPolydisperse {
       if (!(fluidbed::detail::is_finite_number(sp.diameter) && sp.diameter > T(0)))
         require_positive(function, argument("diameter"), sp.diameter);
     }
-    require_in_open(function, "sum of mixture volume fractions", mixture_moments(s.mixture).solids_fraction, T(0),
+    require_in_open(function, "sum of mixture volume fractions", mixture_moments(s.mixture).solid_fraction, T(0),
                     T(1));
     const PolydisperseDragCoefficient<T> beta = (*this)(s);
     detail::validate_result(function, beta, [&s] { return detail::describe_state(s); });
@@ -273,9 +273,9 @@ class BeetstraPolydisperse {
     FLUIDBED_EXPECTS(s.species < s.mixture.size() && s.slip >= T(0));
     FLUIDBED_EXPECTS(s.fluid.density > T(0) && s.fluid.viscosity > T(0));
     const MixtureMoments<T> m = mixture_moments(s.mixture);
-    FLUIDBED_EXPECTS(m.solids_fraction > T(0) && m.solids_fraction < T(1));
+    FLUIDBED_EXPECTS(m.solid_fraction > T(0) && m.solid_fraction < T(1));
     const Species<T>& i = s.mixture[s.species];
-    return {m, T(1) - m.solids_fraction, i.volume_fraction / m.solids_fraction, i.diameter};
+    return {m, T(1) - m.solid_fraction, i.volume_fraction / m.solid_fraction, i.diameter};
   }
 
   double cubic_ = published_cubic_coefficient;

@@ -65,8 +65,8 @@ namespace fluidbed::drag {
 // to O(100)); Benyahia et al. extrapolate to all φ and Re.
 struct KochHill : DragLaw<KochHill> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr long double dilute_solids_fraction = 0.01L;  // φ ≤ this: dilute branch
-  static constexpr long double dense_solids_fraction = 0.4L;    // φ ≥ this: Carman form 10φ/ε³
+  static constexpr long double dilute_solid_fraction = 0.01L;  // φ ≤ this: dilute branch
+  static constexpr long double dense_solid_fraction = 0.4L;    // φ ≥ this: Carman form 10φ/ε³
 
   constexpr std::string_view name() const { return "KochHill"; }
   constexpr std::string_view reference() const {
@@ -114,7 +114,7 @@ struct KochHill : DragLaw<KochHill> {
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
     using std::sqrt;
     using T = value_type_of<S>;
-    if (phi <= constant_as<S>(dilute_solids_fraction)) return (f2(phi) - 1) / (T(0.375) - f3(phi));
+    if (phi <= constant_as<S>(dilute_solid_fraction)) return (f2(phi) - 1) / (T(0.375) - f3(phi));
     const S a = f1(phi);
     const S b = f3(phi);
     return (b + sqrt(b * b - 4 * a * (f0(phi) - f2(phi)))) / (2 * a);
@@ -126,7 +126,7 @@ struct KochHill : DragLaw<KochHill> {
     using T = value_type_of<S>;
     const S re_h = T(0.5) * re;
     if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= constant_as<S>(dilute_solids_fraction)) return 1 + T(0.375) * re_h;
+    if (phi <= constant_as<S>(dilute_solid_fraction)) return 1 + T(0.375) * re_h;
     return f0(phi) + f1(phi) * (re_h * re_h);
   }
 
@@ -148,9 +148,9 @@ struct KochHill : DragLaw<KochHill> {
     using T = value_type_of<S>;
     const S eps = 1 - phi;
     const S carman = 10 * phi / (eps * eps * eps);
-    if (phi >= constant_as<S>(dense_solids_fraction)) return carman;
+    if (phi >= constant_as<S>(dense_solid_fraction)) return carman;
     if (!(phi > 0)) return S(1);
-    const S weight = exp(-10 * (constant_as<S>(dense_solids_fraction) - phi) / phi);
+    const S weight = exp(-10 * (constant_as<S>(dense_solid_fraction) - phi) / phi);
     const S rational = (1 + 3 * sqrt(T(0.5) * phi) + T(135) / 64 * phi * log(phi) + a * phi) /
                        (1 + phi * (T(0.681L) + phi * (b + c * phi)));
     return (1 - weight) * rational + weight * carman;

@@ -299,7 +299,7 @@ FLUIDBED_HOST_DEVICE T variance(std::span<const T> m) {
 
 // φ = M_0, the solids volume fraction (1 − ε) of VDF moments; NaN for an empty set.
 template <class T>
-FLUIDBED_HOST_DEVICE T solids_volume_fraction(std::span<const T> m) {
+FLUIDBED_HOST_DEVICE T solid_fraction(std::span<const T> m) {
   return m.empty() ? std::numeric_limits<T>::quiet_NaN() : m[0];
 }
 
