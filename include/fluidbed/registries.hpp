@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "drag.hpp"
+#include "elastic/elastic_modulus.hpp"
 #include "fluidization/minimum_fluidization.hpp"
 #include "kinetic_theory.hpp"
 #include "settling/richardson_zaki.hpp"
@@ -25,7 +26,7 @@ struct RegistryList {
 
 using Registries = RegistryList<
     single_particle::DragCoefficients, single_particle::TerminalVelocities, settling::RichardsonZakiExponents,
-    fluidization::MinimumFluidizations, drag::DragLaws, kinetic_theory::RadialDistributions,
+    fluidization::MinimumFluidizations, drag::DragLaws, elastic::ElasticModuli, kinetic_theory::RadialDistributions,
     kinetic_theory::MixtureRadialDistributions, kinetic_theory::GranularPressures, kinetic_theory::ShearViscosities,
     kinetic_theory::BulkViscosities, kinetic_theory::Conductivities, kinetic_theory::Dissipations,
     kinetic_theory::FrictionalPressures, kinetic_theory::FrictionalViscosities, kinetic_theory::FrictionalStresses,
