@@ -38,7 +38,7 @@
 //     0.5772, 0.2679 at Re = 0.1 … 1000 (± 6e-5, half a unit of their last digit).
 //   - What the plot draws: every law's equilibrium voidage ε_eq (the large marker) is where its F
 //     meets the weight line (relative 1e-8; at Gidaspow's jump the line passes between the two
-//     sides), and Lewis1949, left out of the plot, gives WenYuGidaspow's F at every plotted ε
+//     sides), and Lewis, left out of the plot, gives WenYuGidaspow's F at every plotted ε
 //     (relative 1e-15), as the legend says.
 //   - Mazzei–Lettieri's equilibrium voidage equals Richardson–Zaki's (relative 1e-9), and Ergun's
 //     minimum fluidization velocity at ε = 0.4 for the 137 µm FCC in air of seed 000 eq. 4.5
@@ -141,7 +141,7 @@ StokesLimit stokes_limit(std::string_view name) {
     return {drag::GidaspowBlended::blending_weight(1.0), "blend weight psi(1): Ergun keeps weight 1 - psi"};
   if (name == "DiFeliceDallavalle" || name == "MazzeiLettieri" || name == "SyamlalOBrien")
     return {23.04 / 24, "Dallavalle C_D Re -> 4.8^2 = 23.04"};
-  if (name == "VanDerHoef2005" || name == "Beetstra2007" || name == "Tang2015" || name == "Tenneti2011" ||
+  if (name == "VanDerHoef" || name == "Beetstra" || name == "Tang" || name == "Tenneti" ||
       name == "KochHill")
     return {1.0, "lattice-Boltzmann fit, isolated-sphere limit F0 = 1"};
   return {1.0, "Schiller-Naumann C_D Re -> 24"};
@@ -189,10 +189,10 @@ struct Group {
 
 const Group law_groups[] = {
     {"Packed-bed and constant-exponent laws",
-     {"GidaspowSwitched", "Ergun", "WenYu1966", "Kmiec1982", "WenYuGidaspow", "GidaspowBlended"}},
+     {"GidaspowSwitched", "Ergun", "WenYu1966", "Kmiec", "WenYuGidaspow", "GidaspowBlended"}},
     {"Voidage functions on a single-sphere C_D",
      {"DiFeliceDallavalle", "DiFeliceSchillerNaumann", "MazzeiLettieri", "SyamlalOBrien"}},
-    {"Fits to simulations of fixed random arrays", {"VanDerHoef2005", "Beetstra2007", "Tang2015", "Tenneti2011", "KochHill"}},
+    {"Fits to simulations of fixed random arrays", {"VanDerHoef", "Beetstra", "Tang", "Tenneti", "KochHill"}},
 };
 
 // One law's curve: a thick line where the state lies inside the law's declared validity, a thin
@@ -219,7 +219,7 @@ void add_law(plot::Panel& panel, const AnyDragLaw& law, int index, const System&
   const std::string outside_style = switched ? "lines lw 3 dt (2,3) lc rgb '#d0d0d0'" : look.line(1.2, "(2,3)");
   std::optional<double> equilibrium =
       fluidization::equilibrium_voidage(law, s.superficial_velocity, s.fluid, s.particles);
-  std::string title = (name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis1949)" : name) + "   [" + validity_text(v) + "]";
+  std::string title = (name == "WenYuGidaspow" ? "WenYuGidaspow (= Lewis)" : name) + "   [" + validity_text(v) + "]";
   char text[64];
   if (!equilibrium)
     std::snprintf(text, sizeof text, ": no bed");
@@ -291,7 +291,7 @@ std::vector<plot::Panel> panels_of(const System& s, std::optional<double> richar
   };
   for (const AnyDragLaw& law : drag::all_drag_laws) {
     const std::string_view name = drag::name_of(law);
-    if (name == "Lewis1949") continue;  // WenYuGidaspow's numbers, checked in main()
+    if (name == "Lewis") continue;  // WenYuGidaspow's numbers, checked in main()
     std::size_t group = std::size(law_groups);
     for (std::size_t g = 0; g < std::size(law_groups); ++g)
       if (std::find(law_groups[g].laws.begin(), law_groups[g].laws.end(), name) != law_groups[g].laws.end()) group = g;
@@ -347,13 +347,13 @@ int main(int argc, char** argv) {
         if (!ok) std::printf("  FAIL: Mazzei-Lettieri's equilibrium voidage differs from Richardson-Zaki's\n");
       }
     }
-    const AnyDragLaw lewis = drag::make_drag_law("Lewis1949"), gidaspow_wen_yu = drag::make_drag_law("WenYuGidaspow");
+    const AnyDragLaw lewis = drag::make_drag_law("Lewis"), gidaspow_wen_yu = drag::make_drag_law("WenYuGidaspow");
     double lewis_apart = 0;
     for (double e : plotted_voidages())
       lewis_apart =
           std::max(lewis_apart, std::abs(dimensionless_force(lewis, s, e) / dimensionless_force(gidaspow_wen_yu, s, e) - 1));
     failures += !(lewis_apart <= 1e-15);
-    std::printf("  every eps_eq: F meets the weight line there (the plot's markers); |Lewis1949/WenYuGidaspow - 1| = "
+    std::printf("  every eps_eq: F meets the weight line there (the plot's markers); |Lewis/WenYuGidaspow - 1| = "
                 "%.1e over the plotted eps (<= 1e-15)%s\n\n",
                 lewis_apart, lewis_apart <= 1e-15 ? "" : "   FAIL");
   }

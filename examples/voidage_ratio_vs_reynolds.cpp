@@ -149,8 +149,8 @@ int main(int argc, char** argv) {
 
   const Curves ergun = curves_of(fluidbed::drag::Ergun{});
   const Curves wen_yu = curves_of(fluidbed::drag::ConstantExponentDrag::wen_yu_1966());
-  const Curves lewis = curves_of(fluidbed::drag::ConstantExponentDrag::lewis_1949());
-  const Curves kmiec = curves_of(fluidbed::drag::ConstantExponentDrag::kmiec_1982());
+  const Curves lewis = curves_of(fluidbed::drag::ConstantExponentDrag::lewis());
+  const Curves kmiec = curves_of(fluidbed::drag::ConstantExponentDrag::kmiec());
   const Curves di_felice = curves_of(fluidbed::drag::DiFelice<fluidbed::single_particle::SchillerNaumannCoefficient>{});
   const Curves mazzei_lettieri = curves_of(fluidbed::drag::MazzeiLettieri{});
 

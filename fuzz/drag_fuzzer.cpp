@@ -341,7 +341,7 @@ void polydisperse(Input& in) {
   }
   const MixtureMoments<T> moments = mixture_moments(s.mixture);
   const DragCoefficient<T> mono =
-      Beetstra2007{}(DragState<T>{T(1) - moments.solid_fraction, s.slip, s.fluid, moments.sauter_diameter});
+      Beetstra{}(DragState<T>{T(1) - moments.solid_fraction, s.slip, s.fluid, moments.sauter_diameter});
   const T tolerance = T(64) * T(mix.count) * std::numeric_limits<T>::epsilon();
   FUZZ_CHECK(close(sum.pressure_gradient, mono.pressure_gradient(), tolerance, mono.pressure_gradient()),
              "BeetstraPolydisperse: species sum %.17g != monodisperse %.17g (pressure_gradient), %zu species",
@@ -371,10 +371,10 @@ void free_functions(Input& in) {
   // Dimensionless forces: finite and positive; Beetstra's inertial part is >= 0 (F >= F0), Tang's
   // extension keeps F positive (tang.hpp).
   const T f0 = drag::detail::van_der_hoef_stokes_force(phi);
-  const T beetstra = Beetstra2007::dimensionless_force(phi, re);
+  const T beetstra = Beetstra::dimensionless_force(phi, re);
   FUZZ_CHECK(is_finite(f0) && f0 >= T(1) - T(4) * eps && is_finite(beetstra) && beetstra >= f0 * (T(1) - T(4) * eps),
              "F0(%.17g) = %.17g, Beetstra F(Re %.17g) = %.17g", double(phi), double(f0), double(re), double(beetstra));
-  const T tang = Tang2015::dimensionless_force(phi, re), tenneti = Tenneti2011::dimensionless_force(phi, re);
+  const T tang = Tang::dimensionless_force(phi, re), tenneti = Tenneti::dimensionless_force(phi, re);
   FUZZ_CHECK(is_finite(tang) && tang > T(0) && is_finite(tenneti) && tenneti > T(0),
              "phi %.17g, Re %.17g: Tang F = %.17g, Tenneti F = %.17g", double(phi), double(re), double(tang),
              double(tenneti));

@@ -10,7 +10,7 @@ Fails (exit 1, listing every problem) when
      (`fluidbed::ns::Name::member` counts for Name too);
   2. a run-time name does not appear in the docs written as `"Name"`. Run-time names are the
      string literals of the family headers that are one CamelCase word: what the laws' name()
-     return ("Ergun", "DiFeliceDallavalle") and the presets pass ("Lewis1949", "WenYu1966");
+     return ("Ergun", "DiFeliceDallavalle") and the presets pass ("Lewis", "WenYu1966");
   3. the docs name a C++ identifier `fluidbed::...` (in backticks) that the headers do not
      declare in that namespace; for `fluidbed::ns::Type::member` the member must also be a
      word of Type's body (a static member function, an enumerator, ...);

@@ -221,7 +221,7 @@ TEST_CASE("the checked entry point rejects out-of-domain states, naming the argu
 
 TEST_CASE("Wen–Yu as CFD codes call it (Gidaspow) is numerically the Lewis α = 2.65 law") {
   const auto cfd = ConstantExponentDrag::wen_yu_gidaspow();
-  const auto lewis = ConstantExponentDrag::lewis_1949();
+  const auto lewis = ConstantExponentDrag::lewis();
   for (double eps : {0.4, 0.8, 0.95})
     for (double w : {0.0, 0.1, 10.0}) CHECK(cfd(state(eps, w)).classical() == lewis(state(eps, w)).classical());
   // and Wen & Yu's own 1966 exponent is 2.70 (seed 000 §3.4.4.2), not the CFD default.
@@ -230,7 +230,7 @@ TEST_CASE("Wen–Yu as CFD codes call it (Gidaspow) is numerically the Lewis α 
 
 TEST_CASE("constant-exponent laws: Stokes limit is 18 μ φ/(d² ε^(α+1)) (seed 000 eq. 3.36)") {
   for (const auto& law :
-       {ConstantExponentDrag::lewis_1949(), ConstantExponentDrag::wen_yu_1966(), ConstantExponentDrag::kmiec_1982()})
+       {ConstantExponentDrag::lewis(), ConstantExponentDrag::wen_yu_1966(), ConstantExponentDrag::kmiec()})
     for (double eps : {0.4, 0.7, 0.95}) {
       const double expected = 18 * air.viscosity * (1 - eps) / (5e-4 * 5e-4 * std::pow(eps, law.exponent() + 1));
       CHECK(law(state(eps, 0.0)).classical() == doctest::Approx(expected).epsilon(1e-14));

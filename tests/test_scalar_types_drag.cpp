@@ -104,7 +104,7 @@ TEST_CASE_TEMPLATE("the single-sphere C_D Re of Stokes and Schiller-Naumann and 
 
 TEST_CASE_TEMPLATE("polydisperse Beetstra in both conventions and with both cubic coefficients agrees with mpmath", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const auto rows = test::scalar_type_rows("drag", "Beetstra2007Polydisperse");
+  const auto rows = test::scalar_type_rows("drag", "BeetstraPolydisperse");
   REQUIRE(rows.size() == 12);
   test::WorstError worst;
   for (const test::ScalarTypeRow& row : rows) {

@@ -19,7 +19,7 @@ double cell_result(std::size_t i) {
   using namespace fluidbed;
   const double u = (static_cast<double>(i % 997) + 0.5) / 997.0;
   const drag::DragState<double> state{0.4 + 0.55 * u, 1e-3 + 0.5 * u, {1.2, 1.8e-5}, 2e-4};
-  const auto law = drag::make_drag_law(i % 2 ? "MazzeiLettieri" : "Beetstra2007");
+  const auto law = drag::make_drag_law(i % 2 ? "MazzeiLettieri" : "Beetstra");
   const double beta = drag::evaluate_with_derivatives(law, state).pressure_gradient().d_voidage;
 
   using namespace kinetic_theory;

@@ -134,7 +134,7 @@ def drag_laws():
         return ((1 - psi) * generic(dr.law_ergun)(eps, w, rho, mu, d)[0] +
                 psi * wen_yu_gidaspow(eps, w, rho, mu, d)[0], None)
     laws = {name: generic(law) for name, law, _ in dr.LAWS}
-    laws.update({'Lewis1949': lewis, 'WenYu1966': constant_exponent(2.70), 'Kmiec1982': constant_exponent(2.78),
+    laws.update({'Lewis': lewis, 'WenYu1966': constant_exponent(2.70), 'Kmiec': constant_exponent(2.78),
                  'WenYuGidaspow': wen_yu_gidaspow, 'GidaspowSwitched': gidaspow_switched,
                  'GidaspowBlended': gidaspow_blended,
                  'MazzeiLettieri': lambda eps, w, rho, mu, d: (mazzei_lettieri_classical(eps, w, rho, mu, d), None)})
@@ -175,7 +175,7 @@ def drag_rows():
                     f_b = eps * y + phi * y ** 2 + cubic * eps * y ** 3
                     cl = 18 * mu * ph[0] * F * f_b / dd[0] ** 2
                     pg = 18 * mu * eps * ph[0] * F * y / dd[0] ** 2
-                    row('drag', 'Beetstra2007Polydisperse', (ph[0], ph[1], dd[0], dd[1], w, rho, mu, cubic), cl, pg)
+                    row('drag', 'BeetstraPolydisperse', (ph[0], ph[1], dd[0], dd[1], w, rho, mu, cubic), cl, pg)
                     n += 1
     # single-sphere C_D Re: p1 = Re
     for Re_s in ('0.0009765625', '0.5', '24', '999.5', '1000', '4096'):

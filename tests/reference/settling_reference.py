@@ -136,7 +136,7 @@ def ut_schiller_naumann(rf, mu, rp, d):
 EXPANSION_LAWS = [
     ('Ergun', dr.law_ergun),
     ('WenYu1966', dr.law_wenyu1966),
-    ('Lewis1949', dr.law_lewis),
+    ('Lewis', dr.law_lewis),
     ('DiFeliceDallavalle', dr.law_difelice_dv),
     ('MazzeiLettieri', dr.law_mazzei_lettieri),
 ]

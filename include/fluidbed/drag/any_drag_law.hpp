@@ -37,7 +37,7 @@ struct DragFamily {
 using DragLaws =
     Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
              DiFelice<single_particle::DallavalleCoefficient>, DiFelice<single_particle::SchillerNaumannCoefficient>,
-             MazzeiLettieri, VanDerHoef2005, Beetstra2007, Tang2015, Tenneti2011, KochHill, SyamlalOBrien>;
+             MazzeiLettieri, VanDerHoef, Beetstra, Tang, Tenneti, KochHill, SyamlalOBrien>;
 
 using AnyDragLaw = DragLaws::Variant;
 

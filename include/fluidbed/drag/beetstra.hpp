@@ -38,10 +38,10 @@ namespace fluidbed::drag {
 // §II.D). It is a fit for arrays, not for isolated spheres: as φ → 0 it is 16 % above
 // Schiller–Naumann at Re = 100 and 68 % above at Re = 1000 (F(0, Re) = 5.27 and 30.8
 // against 4.55 and 18.3).
-struct Beetstra2007 : DragLaw<Beetstra2007> {
+struct Beetstra : DragLaw<Beetstra> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
-  constexpr std::string_view name() const { return "Beetstra2007"; }
+  constexpr std::string_view name() const { return "Beetstra"; }
   constexpr std::string_view reference() const {
     return "Beetstra, R., van der Hoef, M.A., Kuipers, J.A.M. (2007) AIChE J. 53, 489-501, doi:10.1002/aic.11065";
   }

@@ -128,10 +128,10 @@ class PolydisperseDragCoefficientWithDerivatives {
 };
 
 // Beetstra et al. (2007) polydisperse drag on species i of a mixture (same reference as
-// Beetstra2007, with its erratum; MFiX attributes the correction to van der Hoef et al. 2005):
+// Beetstra, with its erratum; MFiX attributes the correction to van der Hoef et al. 2005):
 //
 //   <d> = 1/Σ_j (x_j/d_j)  (Sauter mean),  x_j = φ_j/φ,  y_i = d_i/<d>,
-//   Re  = ρ_f ε <d> w_i / μ_f   (mean diameter, species slip),   F = Beetstra2007 F(φ, Re),
+//   Re  = ρ_f ε <d> w_i / μ_f   (mean diameter, species slip),   F = Beetstra F(φ, Re),
 //   β_i,pressure_gradient = 18 μ_f ε φ_i F · y_i / d_i²                       (model A)
 //   β_i,classical         = 18 μ_f   φ_i F · (ε y_i + φ y_i² + c ε y_i³) / d_i²  (model B)
 //
@@ -161,13 +161,13 @@ class PolydisperseDragCoefficientWithDerivatives {
 // The y³ term. 0.064 ε y_i³ is, per the secondary sources (the generator, MFiX), a fit term
 // for the finite-Re bidisperse data. It makes the model-B total
 // 1 + 0.064 ε Σ x_i y_i times the monodisperse law, i.e. (1 + 0.064 ε) for a single
-// species: the published model B does NOT reduce to Beetstra2007 for a monodisperse
+// species: the published model B does NOT reduce to Beetstra for a monodisperse
 // mixture (6.4 % high as ε → 1). MFiX drops it for its first solids phase only.
 // without_cubic_term() offers c = 0, whose model B is exactly consistent (and reduces
-// to Beetstra2007); the published c = 0.064 is the default. Model A is y_i in both.
+// to Beetstra); the published c = 0.064 is the default. Model A is y_i in both.
 //
 // Validity: bidisperse LB data with diameter ratios up to 1:4 (seed 002 §VI(i)),
-// Re ≤ 1000 for the monodisperse F; φ and Re as Beetstra2007.
+// Re ≤ 1000 for the monodisperse F; φ and Re as Beetstra.
 class BeetstraPolydisperse {
  public:
   static constexpr double published_cubic_coefficient = 0.064;
@@ -178,7 +178,7 @@ class BeetstraPolydisperse {
 
   constexpr double cubic_coefficient() const { return cubic_; }
   constexpr std::string_view name() const {
-    return cubic_ == published_cubic_coefficient ? "Beetstra2007Polydisperse" : "Beetstra2007PolydisperseNoCubic";
+    return cubic_ == published_cubic_coefficient ? "BeetstraPolydisperse" : "BeetstraPolydisperseNoCubic";
   }
   constexpr std::string_view reference() const {
     return "Beetstra, R., van der Hoef, M.A., Kuipers, J.A.M. (2007) AIChE J. 53, 489-501, doi:10.1002/aic.11065, "
@@ -203,7 +203,7 @@ class BeetstraPolydisperse {
                                                        const T& sauter_diameter, const T& share,
                                                        const T& diameter) const {
     const S re = particle_reynolds(fluid, sauter_diameter, voidage, slip);
-    const S force = Beetstra2007::dimensionless_force(S(1 - voidage), re);
+    const S force = Beetstra::dimensionless_force(S(1 - voidage), re);
     const PolydisperseBeta<S> f = correction(voidage, S(diameter / sauter_diameter));
     return {share * beta_from_drag_force(force * f.classical, voidage, fluid.viscosity, diameter) / voidage,
             share * beta_from_drag_force(force * f.pressure_gradient, voidage, fluid.viscosity, diameter)};

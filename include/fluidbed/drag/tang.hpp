@@ -35,11 +35,11 @@ namespace fluidbed::drag {
 // constant). F(φ, 1000) − F0 = 1000 [0.11 φ(1 + φ) + 0.01581 ε + 0.00146/ε⁴] > 0 for every
 // φ (coefficients rounded), so F stays positive and increasing; F is continuous at
 // Re = 1000 with a jump in ∂F/∂Re. Re ≤ 1000 is evaluated exactly as published.
-struct Tang2015 : DragLaw<Tang2015> {
+struct Tang : DragLaw<Tang> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
   static constexpr double fitted_reynolds_max = 1000.0;
 
-  constexpr std::string_view name() const { return "Tang2015"; }
+  constexpr std::string_view name() const { return "Tang"; }
   constexpr std::string_view reference() const {
     return "Tang, Y., Peters, E.A.J.F., Kuipers, J.A.M., Kriebitzsch, S.H.L., van der Hoef, M.A. (2015) AIChE J. "
            "61, 688-698, doi:10.1002/aic.14645";

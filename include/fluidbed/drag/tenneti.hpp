@@ -39,10 +39,10 @@ namespace fluidbed::drag {
 // sphere; at w = 0, F_tot = 1/ε³ + F_φ (finite). β = 0 at ε = 1.
 // Validity: the fitted simulations, 0.1 ≤ φ ≤ 0.5 and 0.01 ≤ Re ≤ 300 (below 0.01 the fit
 // is at its creeping-flow limit).
-struct Tenneti2011 : DragLaw<Tenneti2011> {
+struct Tenneti : DragLaw<Tenneti> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
-  constexpr std::string_view name() const { return "Tenneti2011"; }
+  constexpr std::string_view name() const { return "Tenneti"; }
   constexpr std::string_view reference() const {
     return "Tenneti, S., Garg, R., Subramaniam, S. (2011) Int. J. Multiphase Flow 37, 1072-1092, "
            "doi:10.1016/j.ijmultiphaseflow.2011.05.010";

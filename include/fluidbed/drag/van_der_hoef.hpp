@@ -44,10 +44,10 @@ FLUIDBED_HOST_DEVICE S van_der_hoef_stokes_force(const S& phi) {
 // sphere); β = 0 at ε = 1.
 // Validity: the fitted data, random arrays 0.1 ≤ φ ≤ 0.6, and Re ≲ 1 (at Re = 1 the
 // inertial correction of Beetstra 2007 adds 0.3 % at φ = 0.4 and 4 % at φ = 0.05).
-struct VanDerHoef2005 : DragLaw<VanDerHoef2005> {
+struct VanDerHoef : DragLaw<VanDerHoef> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
 
-  constexpr std::string_view name() const { return "VanDerHoef2005"; }
+  constexpr std::string_view name() const { return "VanDerHoef"; }
   constexpr std::string_view reference() const {
     return "van der Hoef, M.A., Beetstra, R., Kuipers, J.A.M. (2005) J. Fluid Mech. 528, 233-254, "
            "doi:10.1017/S0022112004003295";

@@ -21,13 +21,13 @@ namespace fluidbed::drag {
 // (eq. 3.39), in the inertial limit n = α/2 + 1 (eq. 3.43).
 //
 // Presets (seed 000 §3.4.4.2):
-//   lewis_1949()      α = 2.65   Lewis, Gilliland & Bauer (1949) Ind. Eng. Chem. 41, 1104
+//   lewis()      α = 2.65   Lewis, Gilliland & Bauer (1949) Ind. Eng. Chem. 41, 1104
 //   wen_yu_1966()     α = 2.70   Wen & Yu (1966) Chem. Eng. Prog. Symp. Ser. 62, 100
-//   kmiec_1982()      α = 2.78   Kmiec (1982) Chem. Eng. J. 23, 133
+//   kmiec()      α = 2.78   Kmiec (1982) Chem. Eng. J. 23, 133
 //   wen_yu_gidaspow() α = 2.65   what OpenFOAM, MFiX and Fluent call "WenYu": Gidaspow (1994)
 //                     writes β = ¾ C_D ε φ ρ_f w ε^-2.65 / d in the pressure-gradient
 //                     convention, which is ε^-2.65 in the classical one, i.e. the Lewis
-//                     exponent, not Wen and Yu's own 2.70. Same numbers as lewis_1949(),
+//                     exponent, not Wen and Yu's own 2.70. Same numbers as lewis(),
 //                     own name so that a CFD user finds the law their code calls WenYu.
 // Validity: derived for ε ≳ 0.8 (dilute); used at all ε, over-expands beds in the
 // intermediate regime (seed 000 Fig. 3.2). Re: the Schiller–Naumann range, Re < 1000
@@ -39,16 +39,16 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
   constexpr ConstantExponentDrag(double exponent, std::string_view name, std::string_view reference)
       : exponent_(exponent), name_(name), reference_(reference) {}
 
-  static constexpr ConstantExponentDrag lewis_1949() {
-    return {2.65, "Lewis1949",
+  static constexpr ConstantExponentDrag lewis() {
+    return {2.65, "Lewis",
             "Lewis, W.K., Gilliland, E.R., Bauer, W.C. (1949) Ind. Eng. Chem. 41, 1104-1117, "
             "doi:10.1021/ie50474a004"};
   }
   static constexpr ConstantExponentDrag wen_yu_1966() {
     return {2.70, "WenYu1966", "Wen, C.Y., Yu, Y.H. (1966) Chem. Eng. Prog. Symp. Ser. 62(62), 100-111"};
   }
-  static constexpr ConstantExponentDrag kmiec_1982() {
-    return {2.78, "Kmiec1982", "Kmiec, A. (1982) Chem. Eng. J. 23, 133-136, doi:10.1016/0300-9467(82)80003-8"};
+  static constexpr ConstantExponentDrag kmiec() {
+    return {2.78, "Kmiec", "Kmiec, A. (1982) Chem. Eng. J. 23, 133-136, doi:10.1016/0300-9467(82)80003-8"};
   }
   static constexpr ConstantExponentDrag wen_yu_gidaspow() {
     return {2.65, "WenYuGidaspow",
@@ -57,7 +57,7 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
 
   // The presets, for the family's registry.
   static constexpr std::array<ConstantExponentDrag, 4> registered() {
-    return {lewis_1949(), wen_yu_1966(), kmiec_1982(), wen_yu_gidaspow()};
+    return {lewis(), wen_yu_1966(), kmiec(), wen_yu_gidaspow()};
   }
 
   constexpr double exponent() const { return exponent_; }
