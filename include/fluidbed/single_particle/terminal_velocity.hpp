@@ -9,6 +9,7 @@
 #include "../core/registry.hpp"
 #include "../core/root_finding.hpp"
 #include "drag_coefficient.hpp"
+#include "haider_levenspiel.hpp"
 #include "terminal_velocity_closed_forms.hpp"
 
 namespace fluidbed::single_particle {
@@ -60,6 +61,7 @@ struct TerminalVelocityFamily {
 
 // The terminal-velocity forms; extend with `TerminalVelocities::with<MyForm>`.
 using TerminalVelocities = Registry<TerminalVelocityFamily, StokesTerminalVelocity, NewtonTerminalVelocity,
-                                    DallavalleTerminalVelocity, SchillerNaumannTerminalVelocity>;
+                                    DallavalleTerminalVelocity, SchillerNaumannTerminalVelocity,
+                                    HaiderLevenspielTerminalVelocity>;
 
 }  // namespace fluidbed::single_particle
