@@ -182,7 +182,7 @@ void plausible_states(Input& in) {
     const DragCoefficient<T> direct = std::visit([&](const auto& l) { return l(s); }, law);
     FUZZ_CHECK(evaluate(law, s).classical() == direct.classical() &&
                    same_value(evaluate_with_derivatives(law, s).classical().value, direct.classical()) &&
-                   evaluate_checked(law, s).classical() == direct.classical(),
+                   evaluate(law, s, fluidbed::checked).classical() == direct.classical(),
                "evaluate*(%s) differs from the law's own call; %s", std::string(name_of(law)).c_str(), text(s).c_str());
   }
   // The constant-exponent family with any exponent a user may construct.
@@ -235,7 +235,7 @@ void garbage_states(Input& in) {
     // The hot path only inside its domain (its preconditions are asserted).
     const bool finite = valid && representable(evaluate(law, s));
     try {
-      const DragCoefficient<T> beta = evaluate_checked(law, s);
+      const DragCoefficient<T> beta = evaluate(law, s, fluidbed::checked);
       FUZZ_CHECK(finite, "%s: checked accepted %s %s", law_name.c_str(),
                  valid ? "a non-finite beta at an in-domain" : "an out-of-domain", text(s).c_str());
       for (Buoyancy b : kConventions)
@@ -251,7 +251,7 @@ void garbage_states(Input& in) {
     if (!valid) continue;
     const bool finite_derivatives = representable(evaluate_with_derivatives(law, s), s.slip);
     try {
-      (void)evaluate_with_derivatives_checked(law, s);
+      (void)evaluate_with_derivatives(law, s, fluidbed::checked);
       FUZZ_CHECK(finite_derivatives, "%s: checked_with_derivatives accepted a non-finite result at %s",
                  law_name.c_str(), text(s).c_str());
     } catch (const std::domain_error&) {

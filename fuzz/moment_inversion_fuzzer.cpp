@@ -258,8 +258,8 @@ void sieve(Input& in, std::span<T> m) {
   sieve_moments(psd, voidage, m);
   // The checked entry point accepts what the hot path's preconditions allow, and agrees with it.
   for (std::size_t k = 0; k < m.size(); ++k) {
-    const T checked = sieve_moment_checked(psd, voidage, int(k));
-    FUZZ_CHECK(same_bits(checked, m[k]), "sieve_moment_checked(k = %zu) = %.17g, sieve_moments %.17g", k,
+    const T checked = sieve_moment(psd, voidage, int(k), fluidbed::checked);
+    FUZZ_CHECK(same_bits(checked, m[k]), "sieve_moment(k = %zu, fluidbed::checked) = %.17g, sieve_moments %.17g", k,
                double(checked), double(m[k]));
   }
 }
@@ -278,9 +278,9 @@ void garbage_sieve(Input& in) {
   const T voidage = in.garbage<T>();
   const int k = in.integer(-3, 12);
   try {
-    const T value = sieve_moment_checked(psd, voidage, k);
+    const T value = sieve_moment(psd, voidage, k, fluidbed::checked);
     FUZZ_CHECK(is_finite(value),
-               "sieve_moment_checked(k = %d) accepted edges %s, fractions %s, voidage %.17g and "
+               "sieve_moment(k = %d, fluidbed::checked) accepted edges %s, fractions %s, voidage %.17g and "
                "returned %.17g",
                k, text(std::span<const T>(edges, edge_count)).c_str(),
                text(std::span<const T>(fractions, bins)).c_str(), double(voidage), double(value));
@@ -898,7 +898,7 @@ void count_checks(Input& in, const Problem<T>& p) {
                "sieve helpers: %zu edges, %zu fractions gave a number", edges.size(), bins);
     bool thrown = false;
     try {
-      (void)sieve_moment_checked(psd, voidage, 1);
+      (void)sieve_moment(psd, voidage, 1, fluidbed::checked);
     } catch (const std::domain_error&) {
       thrown = true;
     }

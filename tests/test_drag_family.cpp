@@ -203,7 +203,7 @@ TEST_CASE("names: unique, found by run-time lookup, unknown names rejected with 
 TEST_CASE("the checked entry point rejects out-of-domain states, naming the argument and value") {
   const auto law = make_drag_law("Ergun");
   const auto bad = [&](DragState<double> s, const char* expected) {
-    CHECK_THROWS_WITH_AS(evaluate_checked(law, s), doctest::Contains(expected), std::domain_error);
+    CHECK_THROWS_WITH_AS(evaluate(law, s, fluidbed::checked), doctest::Contains(expected), std::domain_error);
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -215,8 +215,8 @@ TEST_CASE("the checked entry point rejects out-of-domain states, naming the argu
   bad(state(0.5, 0.1, {.density = -1.0, .viscosity = 1e-3}), "'fluid.density' = -1");
   bad(state(0.5, 0.1, {.density = 1.0, .viscosity = 0.0}), "'fluid.viscosity' = 0");
   bad(state(0.5, 0.1, air, nan), "'diameter' = nan");
-  CHECK_THROWS_WITH(evaluate_checked(law, state(0.0, 0.1)), doctest::Contains("fluidbed::Ergun"));
-  CHECK(evaluate_checked(law, state(0.5, 0.1)).classical() == evaluate(law, state(0.5, 0.1)).classical());
+  CHECK_THROWS_WITH(evaluate(law, state(0.0, 0.1), fluidbed::checked), doctest::Contains("fluidbed::Ergun"));
+  CHECK(evaluate(law, state(0.5, 0.1), fluidbed::checked).classical() == evaluate(law, state(0.5, 0.1)).classical());
 }
 
 TEST_CASE("Wen–Yu as CFD codes call it (Gidaspow) is numerically the Lewis α = 2.65 law") {

@@ -305,12 +305,12 @@ TEST_CASE("sieve analyses: edges not one more than fractions give NaN, false, an
     CHECK(std::isnan(geldart_sauter_diameter(psd)));
     CHECK(std::isnan(d32(psd)));
     CHECK(std::isnan(d10(psd)));
-    CHECK_THROWS_AS(sieve_moment_checked(psd, 0.4, 1), std::domain_error);
+    CHECK_THROWS_AS(sieve_moment(psd, 0.4, 1, fluidbed::checked), std::domain_error);
   }
-  CHECK_THROWS_WITH_AS(sieve_moment_checked(bad[0], 0.4, 1),
+  CHECK_THROWS_WITH_AS(sieve_moment(bad[0], 0.4, 1, fluidbed::checked),
                        doctest::Contains("'edges.size()' = 3 is out of domain (must be fractions.size() + 1 = 4)"),
                        std::domain_error);
-  CHECK_THROWS_WITH_AS(sieve_moment_checked(bad[2], 0.4, 1),
+  CHECK_THROWS_WITH_AS(sieve_moment(bad[2], 0.4, 1, fluidbed::checked),
                        doctest::Contains("'fractions.size()' = 0 is out of domain (must be >= 1 (a bin))"),
                        std::domain_error);
 }

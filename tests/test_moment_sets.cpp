@@ -133,36 +133,36 @@ TEST_CASE("sieve moments: fractions are normalised, the pan, and the checked ent
   CHECK(sieve_moment(pan, 0.4, 1) == doctest::Approx(0.6 * (0.1 * 22.5 + 0.9 * 49)).epsilon(1e-15));
   CHECK(std::isinf(sieve_moment(pan, 0.4, -1)));
   CHECK(std::isinf(sieve_moment(pan, 0.4, -2)));
-  CHECK(sieve_moment_checked(sieve, 0.4, 3) == sieve_moment(sieve, 0.4, 3));
-  CHECK(sieve_moment_checked(pan, 0.4, 2) == sieve_moment(pan, 0.4, 2));
-  CHECK_THROWS_AS(sieve_moment_checked(pan, 0.4, -1), std::domain_error);
-  CHECK_THROWS_AS(sieve_moment_checked(sieve, 0.0, 1), std::domain_error);
-  CHECK_THROWS_AS(sieve_moment_checked(sieve, 1.5, 1), std::domain_error);
+  CHECK(sieve_moment(sieve, 0.4, 3, fluidbed::checked) == sieve_moment(sieve, 0.4, 3));
+  CHECK(sieve_moment(pan, 0.4, 2, fluidbed::checked) == sieve_moment(pan, 0.4, 2));
+  CHECK_THROWS_AS(sieve_moment(pan, 0.4, -1, fluidbed::checked), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(sieve, 0.0, 1, fluidbed::checked), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(sieve, 1.5, 1, fluidbed::checked), std::domain_error);
   const std::array<double, 3> decreasing{45, 40, 53};
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<double>{decreasing, pan_fractions}, 0.4, 1), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<double>{decreasing, pan_fractions}, 0.4, 1, fluidbed::checked), std::domain_error);
   const std::array<double, 2> negative{0.5, -0.1};
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<double>{pan_edges, negative}, 0.4, 1), std::domain_error);
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<double>{bin_edges, pan_fractions}, 0.4, 1), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<double>{pan_edges, negative}, 0.4, 1, fluidbed::checked), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<double>{bin_edges, pan_fractions}, 0.4, 1, fluidbed::checked), std::domain_error);
   const std::array<double, 2> zero{0, 0};
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<double>{pan_edges, zero}, 0.4, 1), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<double>{pan_edges, zero}, 0.4, 1, fluidbed::checked), std::domain_error);
   const std::array<double, 3> nan_edge{45, std::nan(""), 53};
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<double>{nan_edge, pan_fractions}, 0.4, 1), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<double>{nan_edge, pan_fractions}, 0.4, 1, fluidbed::checked), std::domain_error);
   // Valid arguments whose moment is not representable (found by fuzz/moment_inversion_fuzzer):
   // M_−3 = (1 − ε)⟨ξ^−3⟩ = (1 − ε)(a^−2 b^−1 + a^−1 b^−2)/2 over one bin [a, b], and a^−2 = 1e320
   // for a = 1e-160: +∞ in double. Named by k, the order asked for.
   const std::array<double, 2> wide{1e-160, 5e27};
   const std::array<double, 1> one{1};
   CHECK(std::isinf(sieve_moment(SieveAnalysis<double>{wide, one}, 0.5, -3)));
-  CHECK_THROWS_WITH_AS(sieve_moment_checked(SieveAnalysis<double>{wide, one}, 0.5, -3),
+  CHECK_THROWS_WITH_AS(sieve_moment(SieveAnalysis<double>{wide, one}, 0.5, -3, fluidbed::checked),
                        doctest::Contains("argument 'k' = -3"), std::domain_error);
   // Below the range a moment underflows to 0, as any product does: M_12 of a bin at 1e-30 m is
   // ~1e-360 (documented; the checked and the hot path agree).
   const std::array<double, 2> tiny{1e-30, 2e-30};
-  CHECK(sieve_moment_checked(SieveAnalysis<double>{tiny, one}, 0.5, 12) == 0);
+  CHECK(sieve_moment(SieveAnalysis<double>{tiny, one}, 0.5, 12, fluidbed::checked) == 0);
   // The fuzzer's case in float: edges 1e-31 and 5e27, k = −3: a^−2 = 1e62, +∞ in float.
   const std::array<float, 2> wide_float{1e-31f, 5e27f};
   const std::array<float, 1> one_float{1};
-  CHECK_THROWS_AS(sieve_moment_checked(SieveAnalysis<float>{wide_float, one_float}, 0.5f, -3), std::domain_error);
+  CHECK_THROWS_AS(sieve_moment(SieveAnalysis<float>{wide_float, one_float}, 0.5f, -3, fluidbed::checked), std::domain_error);
 }
 
 TEST_CASE("Sauter diameters of the published 2-node quadratures (seed 000 Table 6.2): A 88.56 µm, B 272.3 µm") {

@@ -59,16 +59,16 @@ TEST_CASE_TEMPLATE("out of domain: every drag law, value and derivatives, by typ
         },
         any);
     check_entry_point<T>("evaluate_checked " + name, drag_state, [&](const ValuesOf<T>& v) {
-      return drag::evaluate_checked(any, drag_state_of(v)).pressure_gradient();
+      return drag::evaluate(any, drag_state_of(v), fluidbed::checked).pressure_gradient();
     });
     check_entry_point<T>("evaluate_with_derivatives_checked " + name, drag_state, [&](const ValuesOf<T>& v) {
-      return drag::evaluate_with_derivatives_checked(any, drag_state_of(v)).pressure_gradient().value;
+      return drag::evaluate_with_derivatives(any, drag_state_of(v), fluidbed::checked).pressure_gradient().value;
     });
     // ε = 1 and zero slip together: β = 0, ∂(βw)/∂w finite.
     const drag::DragState<T> clear{1.0, 0.0, {1.25, 1.8e-5}, 1e-4};
-    CHECK(drag::evaluate_checked(any, clear).classical() == 0.0);
+    CHECK(drag::evaluate(any, clear, fluidbed::checked).classical() == 0.0);
     CHECK(std::isfinite(
-        drag::evaluate_with_derivatives_checked(any, clear).force_slip_derivative(drag::Buoyancy::pressure_gradient)));
+        drag::evaluate_with_derivatives(any, clear, fluidbed::checked).force_slip_derivative(drag::Buoyancy::pressure_gradient)));
   }
 }
 
@@ -104,11 +104,11 @@ TEST_CASE("in the domain, β out of the range of the type: checked throws, namin
     for (const drag::AnyDragLaw& any : drag::all_drag_laws) {
       const std::string name(drag::name_of(any));
       INFO(name, " at ", std::string(shown));
-      const std::string value = domain_error_message([&] { (void)drag::evaluate_checked(any, state); });
+      const std::string value = domain_error_message([&] { (void)drag::evaluate(any, state, fluidbed::checked); });
       CHECK(value.starts_with("fluidbed::" + name + ": result 'beta."));
       CHECK(value.find(shown) != std::string::npos);
       const std::string derivatives =
-          domain_error_message([&] { (void)drag::evaluate_with_derivatives_checked(any, state); });
+          domain_error_message([&] { (void)drag::evaluate_with_derivatives(any, state, fluidbed::checked); });
       CHECK(derivatives.starts_with("fluidbed::" + name + ": result '"));
     }
   };
@@ -121,9 +121,9 @@ TEST_CASE("in the domain, β out of the range of the type: checked throws, namin
   for (const drag::AnyDragLaw& any : drag::all_drag_laws) {
     INFO(drag::name_of(any));
     if (std::isfinite(drag::evaluate(any, clear).classical()))
-      CHECK(drag::evaluate_checked(any, clear).classical() == drag::evaluate(any, clear).classical());
+      CHECK(drag::evaluate(any, clear, fluidbed::checked).classical() == drag::evaluate(any, clear).classical());
     else
-      CHECK_THROWS_WITH_AS(drag::evaluate_checked(any, clear), doctest::Contains("nan is not finite"),
+      CHECK_THROWS_WITH_AS(drag::evaluate(any, clear, fluidbed::checked), doctest::Contains("nan is not finite"),
                            std::domain_error);
   }
   // A subnormal species diameter: φ_j/d_j overflows in the Sauter mean.

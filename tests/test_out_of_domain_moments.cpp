@@ -202,7 +202,7 @@ TEST_CASE("out of domain: sieve moments, checked") {
   const auto sieve_moment_of = [](const Values& v) {
     const std::array<double, 4> edges{v[0], v[1], v[2], v[3]};
     const std::array<double, 3> fractions{v[4], v[5], v[6]};
-    return sieve_moment_checked(SieveAnalysis<double>{edges, fractions}, v[7], 3);
+    return sieve_moment(SieveAnalysis<double>{edges, fractions}, v[7], 3, fluidbed::checked);
   };
   const std::vector<ArgumentCase> arguments{
       {"edges[0]", 45e-6, negative, {0.0}},
@@ -215,6 +215,6 @@ TEST_CASE("out of domain: sieve moments, checked") {
       {"voidage", 0.5, outside_voidage, {1.0}},
   };
   check_entry_point("sieve_moment", arguments, sieve_moment_of);
-  CHECK_THROWS_WITH_AS(sieve_moment_checked(SieveAnalysis<double>{std::array{0.0, 1e-4}, std::array{1.0}}, 0.5, -1),
+  CHECK_THROWS_WITH_AS(sieve_moment(SieveAnalysis<double>{std::array{0.0, 1e-4}, std::array{1.0}}, 0.5, -1, fluidbed::checked),
                        doctest::Contains("'edges[0] (negative order k)' = 0"), std::domain_error);
 }

@@ -75,7 +75,7 @@ TEST_CASE_TEMPLATE("every law of all_drag_laws: beta and its derivatives agree w
         CHECK(dw <= tolerance);
         derivative_error.record(dw, name + " d/d slip");
       }
-      CHECK_NOTHROW(evaluate_checked(law, s));
+      CHECK_NOTHROW(evaluate(law, s, fluidbed::checked));
     }
   }
   MESSAGE("worst beta " << double(value_error.epsilons) << " eps (1 + kappa) (" << value_error.where << "), derivative "

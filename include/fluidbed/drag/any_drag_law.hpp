@@ -52,25 +52,31 @@ inline constexpr std::optional<AnyDragLaw> find_drag_law(std::string_view name) 
 // The law called `name`; throws std::invalid_argument listing the known names.
 inline AnyDragLaw make_drag_law(std::string_view name) { return DragLaws::make(name); }
 
-// β of a run-time-selected law.
-template <class T>
-DragCoefficient<T> evaluate(const AnyDragLaw& law, const DragState<T>& state) {
-  return std::visit([&](const auto& l) { return l(state); }, law);
+// β of a run-time-selected law: the hot path, or with `fluidbed::checked` the law's `checked`.
+template <class T, ErrorPolicy Policy = Unchecked>
+DragCoefficient<T> evaluate(const AnyDragLaw& law, const DragState<T>& state, Policy = {}) {
+  return std::visit(
+      [&](const auto& l) {
+        if constexpr (std::same_as<Policy, Checked>)
+          return l.checked(state);
+        else
+          return l(state);
+      },
+      law);
 }
 
-template <class T>
-DragCoefficientWithDerivatives<T> evaluate_with_derivatives(const AnyDragLaw& law, const DragState<T>& state) {
-  return std::visit([&](const auto& l) { return l.with_derivatives(state); }, law);
-}
-
-template <class T>
-DragCoefficient<T> evaluate_checked(const AnyDragLaw& law, const DragState<T>& state) {
-  return std::visit([&](const auto& l) { return l.checked(state); }, law);
-}
-
-template <class T>
-DragCoefficientWithDerivatives<T> evaluate_with_derivatives_checked(const AnyDragLaw& law, const DragState<T>& state) {
-  return std::visit([&](const auto& l) { return l.checked_with_derivatives(state); }, law);
+// β and its derivatives of a run-time-selected law (with `fluidbed::checked`: checked_with_derivatives).
+template <class T, ErrorPolicy Policy = Unchecked>
+DragCoefficientWithDerivatives<T> evaluate_with_derivatives(const AnyDragLaw& law, const DragState<T>& state,
+                                                            Policy = {}) {
+  return std::visit(
+      [&](const auto& l) {
+        if constexpr (std::same_as<Policy, Checked>)
+          return l.checked_with_derivatives(state);
+        else
+          return l.with_derivatives(state);
+      },
+      law);
 }
 
 }  // namespace fluidbed::drag

@@ -16,7 +16,7 @@
 // output longer than its input); a function returning one value returns NaN for too few
 // moments, a sieve analysis whose edges are not one more than its fractions (or without a bin),
 // or a quadrature whose size is not within 0 … N. Nothing is read beyond a span, at any
-// optimisation level; sieve_moment_checked throws instead, naming the counts.
+// optimisation level; sieve_moment(…, fluidbed::checked) throws instead, naming the counts.
 #pragma once
 
 #include <array>
@@ -168,30 +168,16 @@ FLUIDBED_HOST_DEVICE T sieve_sum(const SieveAnalysis<T>& psd, int k) {
 // i.e. bin volume fractions ω_i = ν_i⟨ξ³⟩_i/Σ_j ν_j⟨ξ³⟩_j with a VDF ∝ ξ³ inside each bin. Feeding
 // those ω_i to E.7 instead would differ at second order in the bin width.
 // NaN unless edges.size() == fractions.size() + 1 >= 2 (see Counts above). Preconditions
-// (checked by sieve_moment_checked): edges strictly increasing and >= 0, fractions >= 0 with a
+// (validated with fluidbed::checked): edges strictly increasing and >= 0, fractions >= 0 with a
 // positive sum, 0 < ε <= 1, edges[0] > 0 if k < 0 (else the result is +∞), and M_k within the
-// range of T (edges whose powers overflow give ±∞ or NaN: sieve_moment_checked rejects them;
+// range of T (edges whose powers overflow give ±∞ or NaN: the checked path rejects them;
 // below the range, 0).
-template <class T>
-FLUIDBED_HOST_DEVICE T sieve_moment(const SieveAnalysis<T>& psd, const T& voidage, int k) {
-  return (T(1) - voidage) * detail::sieve_sum(psd, k) / detail::sieve_sum(psd, 0);
-}
+namespace detail {
 
-// M_0 … M_{out.size()−1} of a sieve analysis (as sieve_moment). Returns false, every entry NaN,
-// unless edges.size() == fractions.size() + 1 >= 2.
+// sieve_moment's preconditions validated (the checked path): throws std::domain_error naming
+// the offending argument.
 template <class T>
-FLUIDBED_HOST_DEVICE bool sieve_moments(const SieveAnalysis<T>& psd, const T& voidage, std::span<T> out) {
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = sieve_moment(psd, voidage, int(k));
-  return detail::bins_match(psd);
-}
-
-// sieve_moment with its preconditions validated: throws std::domain_error naming the
-// offending argument. It also throws, naming k, when the moment itself is beyond the range of T:
-// the powers of the edges (or the sums of the fractions) overflow, and the result would be ±∞ or
-// NaN. A moment below the range underflows to 0 (or a subnormal) as any product does, in the
-// hot path and here alike: float in SI units gives M_k = 0 from k ~ 12.
-template <class T>
-T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
+void require_valid_sieve(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   constexpr const char* function = "moments::sieve_moment";
   if (psd.fractions.empty())
     fluidbed::detail::throw_domain_error(function, "fractions.size()", psd.fractions.size(), "must be >= 1 (a bin)");
@@ -211,14 +197,34 @@ T sieve_moment_checked(const SieveAnalysis<T>& psd, const T& voidage, int k) {
   }
   require_positive(function, "sum of fractions", total);
   require_in_half_open(function, "voidage", voidage, T(0), T(1));
-  const T moment = sieve_moment(psd, voidage, k);
-  if (!fluidbed::detail::is_finite_number(moment)) {
-    fluidbed::detail::throw_domain_error(function, "k", k,
-                                         "M_k of these edges and fractions evaluates to " +
-                                             fluidbed::detail::number_text(moment) +
-                                             ": beyond the range of the floating type");
-  }
+}
+
+}  // namespace detail
+
+// With `fluidbed::checked` as the last argument, the preconditions are validated and
+// std::domain_error names the offending argument; it also names k when the moment itself is
+// beyond the range of T: the powers of the edges (or the sums of the fractions) overflow, and the
+// result would be ±∞ or NaN. A moment below the range underflows to 0 (or a subnormal) as any
+// product does, in either path: float in SI units gives M_k = 0 from k ~ 12.
+template <class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE T sieve_moment(const SieveAnalysis<T>& psd, const T& voidage, int k, Policy = {}) {
+  if constexpr (std::same_as<Policy, Checked>) detail::require_valid_sieve(psd, voidage, k);
+  const T moment = (T(1) - voidage) * detail::sieve_sum(psd, k) / detail::sieve_sum(psd, 0);
+  if constexpr (std::same_as<Policy, Checked>)
+    if (!fluidbed::detail::is_finite_number(moment))
+      fluidbed::detail::throw_domain_error("moments::sieve_moment", "k", k,
+                                           "M_k of these edges and fractions evaluates to " +
+                                               fluidbed::detail::number_text(moment) +
+                                               ": beyond the range of the floating type");
   return moment;
+}
+
+// M_0 … M_{out.size()−1} of a sieve analysis (as sieve_moment). Returns false, every entry NaN,
+// unless edges.size() == fractions.size() + 1 >= 2.
+template <class T>
+FLUIDBED_HOST_DEVICE bool sieve_moments(const SieveAnalysis<T>& psd, const T& voidage, std::span<T> out) {
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = sieve_moment(psd, voidage, int(k));
+  return detail::bins_match(psd);
 }
 
 // Geldart's estimate of the Sauter diameter from sieve data, seed 000 eq. 6.1:
