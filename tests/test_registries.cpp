@@ -30,7 +30,7 @@ template <class Law>
 std::vector<ValidityInterval> validity_of(const Law& law) {
   const auto v = law.validity();
   if constexpr (requires { v.voidage_min; })  // a drag law's box (drag::ValidityRange)
-    return {{"voidage", v.voidage_min, v.voidage_max}, {"Re", v.reynolds_min, v.reynolds_max}};
+    return {{"voidage", v.voidage_min, v.voidage_max}, {"reynolds", v.reynolds_min, v.reynolds_max}};
   else
     return {v.begin(), v.end()};
 }
@@ -119,9 +119,13 @@ TEST_CASE("registries: each closure's metadata — reference and validity — is
     INFO("closure ", e.name, ", reference: ", e.reference);
     std::smatch year_match;
     REQUIRE(std::regex_search(e.reference, year_match, year));
+    // One spelling per quantity across the library: the argument names of the closures.
+    static const std::set<std::string> quantities{"voidage",      "solid_fraction", "total_solid_fraction",
+                                                  "reynolds",     "terminal_reynolds", "archimedes",
+                                                  "wall_ratio",   "sphericity"};
     for (const ValidityInterval& range : e.validity) {
       INFO("validity of ", range.quantity);
-      CHECK_FALSE(range.quantity.empty());
+      CHECK(quantities.count(std::string(range.quantity)) == 1);
       CHECK(range.min <= range.max);
     }
     // The catalogue section that gives the run-time name "Name".

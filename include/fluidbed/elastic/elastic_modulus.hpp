@@ -321,7 +321,7 @@ struct ElasticModulus {
 
 // The range every model was derived for: 1-D fluidization, every ε in (0, 1] and Re_t.
 inline constexpr Validity<2> fluidization_validity{
-    {{"voidage", 0.0, 1.0}, {"Re_t", 0.0, std::numeric_limits<double>::infinity()}}};
+    {{"voidage", 0.0, 1.0}, {"terminal_reynolds", 0.0, std::numeric_limits<double>::infinity()}}};
 
 // Foscolo–Gibilaro, eq. 3.75: E_f = 3.2 d (1 − ε)(ρ_p − ρ_f) g [Pa]. Native buoyancy:
 // pressure-gradient (the Particle Bed Model's drag carries the factor ε of eq. 3.19). Derived
