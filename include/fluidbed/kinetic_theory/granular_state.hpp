@@ -178,26 +178,14 @@ void require_parameters(std::string_view function, const Law& law) {
   if constexpr (requires { law.parameter_domain(); }) require_within(function, law.parameter_domain());
 }
 
-template <class S>
-struct scalar_of {
-  using type = S;
-};
-template <class T, int N>
-struct scalar_of<Dual<T, N>> {
-  using type = T;
-};
-// The plain floating type under S (T for Dual<T, N>).
-template <class S>
-using scalar_of_t = typename scalar_of<S>::type;
-
 // f(x) for x ≤ x_c and its tangent at x_c beyond: f(x_c) + f'(x_c)(x − x_c). The closures
 // use it for factors that are singular at a packing limit (documented per closure): the
 // result is finite for every x, continuous with a continuous slope, and the derivative
 // a Dual carries is the derivative of the continued function. f must accept any scalar
 // type (a generic lambda); its slope at x_c is taken with a one-component Dual.
 template <class S, class F>
-FLUIDBED_HOST_DEVICE S continued_linearly_above(const S& x, const scalar_of_t<S>& x_c, const F& f) {
-  using T = scalar_of_t<S>;
+FLUIDBED_HOST_DEVICE S continued_linearly_above(const S& x, const value_type_of<S>& x_c, const F& f) {
+  using T = value_type_of<S>;
   if (!(value_of(x) > x_c)) return f(x);
   const Dual<T, 1> at = f(Dual<T, 1>::variable(x_c, 0));
   return at.value + at.derivative[0] * (x - x_c);
