@@ -51,7 +51,7 @@ inline constexpr bool is_variant<std::variant<Laws...>> = true;
 }  // namespace detail
 
 // What the equilibrium solvers accept: one drag law, or a std::variant of drag laws (any
-// registry's Variant: drag::AnyDragLaw, or a user's DragLaws::with<MyLaw>::Variant).
+// registry's Variant: drag::AnyDragLaw, or the Variant of a user's DragLaws::with<MyLaw>).
 template <class Law, class T>
 concept DragLawFor = SingleDragLawFor<Law, T> || detail::is_variant_of_drag_laws<Law, T>::value;
 

@@ -2,8 +2,8 @@
 // function (core/registry.hpp), each listing the library's laws of that kind. Laws with
 // parameters are registered with the values their comments give (packing limits, Hrenya and
 // Sinclair's L, friction onsets and angles); a host picks a law by name and sets its own
-// parameters on the copy. A user adds a law of their own with `::with<MyLaw>`, e.g.
-//   using MyViscosities = ShearViscosities::with<MyViscosity>;
+// parameters on the copy. A user adds a law of their own with `Registry::with<MyLaw>` (e.g.
+//   using MyViscosities = ShearViscosities::with<MyViscosity>;)
 // The laws of one registry share one calling shape, except GasExchangeSources, whose two
 // sources take different arguments (gas_exchange.hpp).
 #pragma once
