@@ -178,3 +178,15 @@ TEST_CASE("β at extreme Re*: finite where representable, equal to the Newton li
   CHECK(d.value == ML{}(sf).classical());
   CHECK((std::isfinite(d.d_voidage) && std::isfinite(d.d_slip)));
 }
+
+TEST_CASE("a state inside the domain whose Re overflows: no assertion in the hot path, a status from checked") {
+  // ε, w, ρ_f, μ_f and d are finite and valid, but ρ_f ε w d/μ_f = +∞ in double (found by the
+  // drag fuzzer, fuzz/corpus/drag_fuzzer/overflowing_reynolds_mazzei_lettieri).
+  const DragState<double> state{0.5, 1e300, {1e10, 1e-300}, 1.0};
+  REQUIRE(std::isinf(particle_reynolds(state.fluid, state.diameter, state.voidage, state.slip)));
+  const double beta = ML{}(state).classical();
+  CHECK_FALSE(std::isfinite(beta));
+  CHECK_FALSE(std::isfinite(ML{}.with_derivatives(state).classical().value));
+  CHECK_THROWS_WITH_AS(ML{}.checked(state), doctest::Contains("is not finite for state {voidage = 0.5"),
+                       std::domain_error);
+}

@@ -54,15 +54,20 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S effective_reynolds(const S& voidage, const S& re) {
     using T = value_type_of<S>;
+    using std::exp;
     using std::pow;
     const T re_value = value_of(re);
     if (!(re_value > T(0))) return re * pow(voidage, T(-4.8L));  // Re* = Re ε^−4.8 as Re → 0
-    const T re_star = settling::richardson_zaki_terminal_reynolds(re_value, T(value_of(voidage)));
+    // The relation's solve itself rather than settling::richardson_zaki_terminal_reynolds, which
+    // asserts a finite Re: inside this law's domain Re = ρ_f ε w d/μ_f may overflow to +∞, where
+    // the law's contract is a non-finite β for `checked` to report, not an assertion.
+    const T e = value_of(voidage);
+    const T re_star =
+        e == T(1) ? re_value : exp(settling::solve_richardson_zaki_terminal_reynolds(re_value, e).log_terminal_reynolds);
     if constexpr (std::is_same_v<S, T>) {
       return re_star;
     } else {
       static_assert(is_dual<S>::value, "Re* derivatives are propagated through fluidbed::Dual");
-      using std::exp;
       using std::log;
       const T log_re_star = log(re_star);
       const T slope = T(1) + re_star * settling::MazzeiExponent::slope(re_star) * T(log(value_of(voidage)));

@@ -26,7 +26,7 @@ namespace fluidbed::fluidization {
 //      ε_mf > 0.85: d1 = ln B/ln ε_mf, c1 = 0.85^(d1 − 1.28).
 // The law then reproduces u_mf exactly at ε_mf. A calibration, not a per-cell call: it always
 // checks. Throws std::domain_error for arguments out of their domain (u_mf > 0, ε_mf ∈ (0, 1),
-// the settling system's), when u_mf is so small that B ≤ 0 (V_r ≤ A/(1 + 0.06 Re_t)), and when
+// the settling system's), when Ar is beyond the floating-point range, when u_mf is so small that B ≤ 0 (V_r ≤ A/(1 + 0.06 Re_t)), and when
 // the data imply c1 or d1 beyond the floating-point range.
 template <class T>
 drag::SyamlalOBrien syamlal_obrien_from_minimum_fluidization(const T& velocity, const T& voidage, const Fluid<T>& fluid,
@@ -41,6 +41,10 @@ drag::SyamlalOBrien syamlal_obrien_from_minimum_fluidization(const T& velocity, 
                                 Argument<T>{"minimum_fluidization_voidage", voidage, domains::open(T(0), T(1))}),
                       single_particle::settling_domain(fluid, particles, gravity)));
   const T archimedes_number = archimedes(fluid, particles, gravity);
+  // Valid data can give an Ar beyond the range (a large d³ or ρ_f Δρ g/μ_f²): a status, not an
+  // input to Dallavalle's Re_t, whose domain is finite Ar.
+  require_finite_result(function, "archimedes", archimedes_number,
+                        [&] { return describe(single_particle::settling_domain(fluid, particles, gravity)); });
   const T re_terminal = single_particle::DallavalleTerminalVelocity{}.reynolds(archimedes_number);
   const T ratio = fluid.density * (velocity / voidage) * particles.diameter / fluid.viscosity / re_terminal;
   const T b = (ratio * (1 + T(0.06L) * re_terminal) - pow(voidage, T(4.14L))) / (T(0.06L) * re_terminal);
