@@ -16,6 +16,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "domain.hpp"
+
 namespace fluidbed {
 
 // One quantity's range over which a closure was fitted or derived. Outside it the closure
@@ -28,6 +30,17 @@ struct ValidityInterval {
 
 template <std::size_t N>
 using Validity = std::array<ValidityInterval, N>;
+
+// The domain of a closure's own parameters (a packing limit, a wall ratio) in T:
+// `law.parameter_domain<T>()` where the closure has parameters, else an empty list, so that a
+// family's base joins it to its arguments' domain whatever law it serves.
+template <class T, class Law>
+FLUIDBED_HOST_DEVICE constexpr auto parameter_domain_of(const Law& law) {
+  if constexpr (requires { law.template parameter_domain<T>(); })
+    return law.template parameter_domain<T>();
+  else
+    return Arguments<T, 0>{};
+}
 
 // The metadata members every closure has.
 template <class Law>

@@ -62,10 +62,7 @@ struct RichardsonZakiExponent {
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr auto domain(const T& x) const {
     const Arguments<T, 1> own{{{Law::argument, x, domains::non_negative<T>()}}};
-    if constexpr (requires { self().template parameter_domain<T>(); })
-      return join(own, self().template parameter_domain<T>());
-    else
-      return own;
+    return join(own, parameter_domain_of<T>(self()));
   }
 
   template <class S>

@@ -71,10 +71,7 @@ struct ArchimedesCorrelation {
   // The domain of a call with Ar: Ar's, then the law's parameters'.
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr auto domain(const T& archimedes) const {
-    if constexpr (requires { self().template parameter_domain<T>(); })
-      return join(archimedes_domain(archimedes), self().template parameter_domain<T>());
-    else
-      return archimedes_domain(archimedes);
+    return join(archimedes_domain(archimedes), parameter_domain_of<T>(self()));
   }
 
   template <class T>
@@ -103,9 +100,7 @@ struct ArchimedesCorrelation {
 
   template <class T>
   T checked(const Fluid<T>& fluid, const Particles<T>& particles, const T& gravity = standard_gravity_as<T>()) const {
-    require_within(self().name(), settling_domain(fluid, particles, gravity));
-    if constexpr (requires { self().template parameter_domain<T>(); })
-      require_within(self().name(), self().template parameter_domain<T>());
+    require_within(self().name(), join(settling_domain(fluid, particles, gravity), parameter_domain_of<T>(self())));
     return (*this)(fluid, particles, gravity);
   }
 
