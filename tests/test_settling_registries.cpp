@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -77,6 +78,24 @@ void check_lookup(const char* family) {
 double central_difference(const auto& f, double x) {
   const double h = 1e-6 * std::max(x, 1.0);
   return (f(x + h) - f(x - h)) / (2 * h);
+}
+
+// Every correlation Re(Ar) of a registry: with_derivatives gives the value of the hot path and
+// a dRe/dAr equal to a central difference, at each Ar of `grid`.
+template <class Registry>
+void check_archimedes_correlations(std::initializer_list<double> grid) {
+  for (const auto& any : Registry::all())
+    std::visit(
+        [&](const auto& law) {
+          for (const double ar : grid) {
+            INFO(law.name(), " at Ar = ", ar);
+            const auto with = law.with_derivatives(ar);
+            CHECK(fluidbed::test::same_arithmetic(with.value, law.reynolds(ar)));
+            const auto re_of = [&](double a) { return law.reynolds(a); };
+            CHECK(with.d_archimedes == doctest::Approx(central_difference(re_of, ar)).epsilon(1e-6));
+          }
+        },
+        any);
 }
 
 // A user's own Richardson–Zaki exponent: a constant n.
@@ -206,19 +225,8 @@ TEST_CASE("with_derivatives: the hot path's value and a central finite differenc
           }
         },
         any);
-  for (const auto& any : TerminalVelocities::all())
-    std::visit(
-        [](const auto& law) {
-          // Ar = 3e5 stays off the Schiller–Naumann gap (328 716 < Ar < 330 000).
-          for (const double ar : {0.5, 40.0, 3.0e3, 3.0e5, 1.0e8}) {
-            INFO(law.name(), " at Ar = ", ar);
-            const auto with = law.with_derivatives(ar);
-            CHECK(fluidbed::test::same_arithmetic(with.value, law.reynolds(ar)));
-            const auto re_of = [&](double a) { return law.reynolds(a); };
-            CHECK(with.d_archimedes == doctest::Approx(central_difference(re_of, ar)).epsilon(1e-6));
-          }
-        },
-        any);
+  // Ar = 3e5 stays off the Schiller–Naumann gap (328 716 < Ar < 330 000).
+  check_archimedes_correlations<TerminalVelocities>({0.5, 40.0, 3.0e3, 3.0e5, 1.0e8});
   // At Ar = 0 the viscous limits: 1/18 (Stokes, Schiller–Naumann), 1/17.28 (Dallavalle).
   CHECK(single_particle::StokesTerminalVelocity{}.with_derivatives(0.0).d_archimedes == 1.0 / 18);
   CHECK(single_particle::SchillerNaumannTerminalVelocity{}.with_derivatives(0.0).d_archimedes == 1.0 / 18);
@@ -238,18 +246,7 @@ TEST_CASE("with_derivatives: the hot path's value and a central finite differenc
   // With a wall ratio: the parameter enters the kernel, not the derivative's variable.
   const settling::KhanRichardsonExponent walled(0.02);
   CHECK(walled.with_derivatives(500.0).d_argument == doctest::Approx(central_difference(walled, 500.0)).epsilon(1e-6));
-  for (const auto& any : MinimumFluidizations::all())
-    std::visit(
-        [](const auto& law) {
-          for (const double ar : {1e-3, 10.0, 1.0e4, 1.0e7}) {
-            INFO(law.name(), " at Ar = ", ar);
-            const auto with = law.with_derivatives(ar);
-            CHECK(fluidbed::test::same_arithmetic(with.value, law.reynolds(ar)));
-            const auto re_of = [&](double a) { return law.reynolds(a); };
-            CHECK(with.d_archimedes == doctest::Approx(central_difference(re_of, ar)).epsilon(1e-6));
-          }
-        },
-        any);
+  check_archimedes_correlations<MinimumFluidizations>({1e-3, 10.0, 1.0e4, 1.0e7});
 }
 
 TEST_CASE("the equilibrium solvers take any variant of drag laws, not only AnyDragLaw") {
