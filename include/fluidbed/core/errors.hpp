@@ -181,24 +181,10 @@ void require_in_half_open(std::string_view function, std::string_view argument, 
   require_in(function, argument, x, domains::half_open(lower, upper));
 }
 
-// Throws unless x is finite and lower <= x < upper.
-template <class T>
-void require_in_closed_open(std::string_view function, std::string_view argument, const T& x, const T& lower,
-                            const T& upper) {
-  require_in(function, argument, x, domains::closed_open(lower, upper));
-}
-
 // Throws unless x is finite and lower < x < upper.
 template <class T>
 void require_in_open(std::string_view function, std::string_view argument, const T& x, const T& lower, const T& upper) {
   require_in(function, argument, x, domains::open(lower, upper));
-}
-
-// Throws unless x is finite and lower <= x <= upper.
-template <class T>
-void require_in_closed(std::string_view function, std::string_view argument, const T& x, const T& lower,
-                       const T& upper) {
-  require_in(function, argument, x, domains::closed(lower, upper));
 }
 
 }  // namespace fluidbed
