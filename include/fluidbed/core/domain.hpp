@@ -101,10 +101,18 @@ FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1 + sizeof...(Rest)> arguments(const
 // Two lists as one (a state's arguments followed by a material's, …).
 template <class T, std::size_t M, std::size_t N>
 FLUIDBED_HOST_DEVICE constexpr Arguments<T, M + N> join(const Arguments<T, M>& a, const Arguments<T, N>& b) {
-  Arguments<T, M + N> all{};
-  for (std::size_t i = 0; i < M; ++i) all[i] = a[i];
-  for (std::size_t i = 0; i < N; ++i) all[M + i] = b[i];
-  return all;
+  // An empty list (a law without parameters) is returned as it is: no loop `i < 0`, which nvcc
+  // reports as a pointless comparison.
+  if constexpr (N == 0) {
+    return a;
+  } else if constexpr (M == 0) {
+    return b;
+  } else {
+    Arguments<T, M + N> all{};
+    for (std::size_t i = 0; i < M; ++i) all[i] = a[i];
+    for (std::size_t i = 0; i < N; ++i) all[M + i] = b[i];
+    return all;
+  }
 }
 
 // True if every argument lies in its interval: the hot path's precondition.
