@@ -5,8 +5,11 @@ Usage: check_layering.py [PROJECT_ROOT]   (default: the parent of this file's fo
 
 Each folder (and each umbrella header at the top) has a layer; a header may include headers of
 its own folder and of lower layers only, and may call `<namespace>::detail::` only for its own
-family's namespace or core's (`fluidbed::detail`). Fails (exit 1, listing every violation)
-otherwise, and when a folder exists that LAYERS does not place. Python 3 standard library only.
+family's namespace or core's (`fluidbed::detail`). Every `throw` of the library, and
+`#include <stdexcept>`, is in core/errors.hpp, the host-only header of the checked entry points
+(device code, compiled by tests/cuda/, never reaches it). Fails (exit 1, listing every
+violation) otherwise, and when a folder exists that LAYERS does not place. Python 3 standard
+library only.
 """
 
 import re
@@ -27,6 +30,8 @@ LAYERS = [
 LEVEL = {name: level for level, names in enumerate(LAYERS) for name in names}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 DETAIL_CALL = re.compile(r"\b(\w+)::detail::")
+THROWING = re.compile(r"\bthrow\b|#\s*include\s*<stdexcept>")
+THROWING_HEADER = Path("core") / "errors.hpp"
 
 
 def unit_of(path, include_dir):
@@ -55,8 +60,11 @@ def main():
             if target_unit != unit and LEVEL.get(target_unit, 99) >= LEVEL[unit]:
                 problems.append(f"{header.relative_to(root)} ({unit}) includes {target} ({target_unit}): "
                                 "not a lower layer")
+        code = re.sub(r"//[^\n]*", "", text)
+        if header.relative_to(include_dir) != THROWING_HEADER and THROWING.search(code):
+            problems.append(f"{header.relative_to(root)} throws or includes <stdexcept>: "
+                            f"only {THROWING_HEADER.as_posix()} may (the checked paths call its helpers)")
         if unit != "umbrellas":
-            code = re.sub(r"//[^\n]*", "", text)
             for namespace in set(DETAIL_CALL.findall(code)):
                 if namespace not in ("fluidbed", unit):
                     problems.append(f"{header.relative_to(root)} ({unit}) calls {namespace}::detail:: "
@@ -66,7 +74,8 @@ def main():
         for problem in problems:
             print("  " + problem)
         return 1
-    print(f"layering OK: {len(LAYERS)} layers, no include of a higher or equal layer, no cross-family detail:: call")
+    print(f"layering OK: {len(LAYERS)} layers, no include of a higher or equal layer, no cross-family detail:: call, "
+          f"no throw outside {THROWING_HEADER.as_posix()}")
     return 0
 
 

@@ -1,16 +1,22 @@
 // The per-cell entry points compiled as CUDA device code: kernels evaluate every
-// monodisperse drag law (value and ∂β/∂ε, ∂β/∂w), invert three-node moment sets, evaluate
-// the kinetic-theory set with its derivatives, and the elastic force with its drag. The host evaluates the same
-// cells and, where a GPU is present, compares; where none is, the program reports a skip.
+// monodisperse drag law (value and ∂β/∂ε, ∂β/∂w), every closure of every registry of the
+// library (fluidbed::Registries: hot path and with_derivatives), invert three-node moment sets,
+// evaluate the kinetic-theory set with its derivatives, and the elastic force with its drag.
+// The host evaluates the same cells and, where a GPU is present, compares; where none is, the
+// program reports a skip. nvcc reports a host function reached from device code, so that every
+// warning being an error (run_device_compile_test.sh) also shows that no closure's device path
+// reaches the checked entry points' throwing helpers (core/errors.hpp).
 #include <cuda_runtime.h>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <tuple>
 #include <vector>
 
 #include "fluidbed/fluidbed.hpp"
+#include "fluidbed/registries.hpp"
 
 namespace {
 
@@ -42,6 +48,107 @@ FLUIDBED_HOST_DEVICE void drag_cell(int i, double* out) {
   double* slot = out + i * laws * outputs_per_law;
   std::apply([&](const auto&... law) { ((store_drag(law, state, slot), slot += outputs_per_law), ...); },
              drag_family());
+}
+
+// Every closure of every registry, called in one cell with arguments inside its domain, in
+// the calling shape of its registry. A registry not listed here stops the build, so that a new
+// family is added here too.
+template <class T>
+FLUIDBED_HOST_DEVICE double number_of(const T& value) {
+  if constexpr (requires { value.pressure_gradient(); })
+    return value.pressure_gradient();  // a drag coefficient β
+  else if constexpr (requires { value.pressure; })
+    return value.pressure + value.viscosity;  // a frictional stress (p_f, μ_f)
+  else
+    return value;
+}
+
+template <class Registry, class... Listed>
+constexpr bool is_one_of = (std::is_same_v<Registry, Listed> || ...);
+
+template <class Registry, class Law>
+FLUIDBED_HOST_DEVICE double evaluate_closure(const Law& law, int i) {
+  using namespace kinetic_theory;
+  const double u = (i + 0.5) / cells;
+  const drag::DragState<double> drag_state = cell_state(i);
+  const Particles<double> particles{2500.0, 1.5e-4}, small{2500.0, 1e-4};
+  const elastic::EquilibriumState<double> equilibrium{drag_state.voidage, drag_state.fluid, particles, 2.0};
+  const double phi = 0.05 + 0.5 * u, theta = 1e-4 + 0.01 * u, x = 0.3 + 100 * u;  // x: Re, Re_t, Ar or p_f
+  const GranularMaterial<double> m{2e-4, 2500.0, 0.9};
+  const StrainRate<double> rate{-0.5 + u, 4.0 + u};
+  const CarnahanStarling rdf;
+  const double g0 = rdf(phi), slip = 0.01 + u, gas_viscosity = 1.8e-5, beta = 1e4;
+  const std::array<double, 2> fractions{0.6 * phi, 0.4 * phi}, diameters{1.5e-4, 1e-4};
+  const std::span<const double> diameter_span(diameters);
+  if constexpr (is_one_of<Registry, single_particle::DragCoefficients, settling::RichardsonZakiExponents>) {
+    (void)law.with_derivatives(x);
+    return law(x);
+  } else if constexpr (std::is_same_v<Law, single_particle::SchillerNaumannTerminalVelocity>) {
+    return 0;  // host only: Re_t(Ar) by Boost.Math's TOMS 748, which has no device code
+  } else if constexpr (is_one_of<Registry, single_particle::TerminalVelocities, fluidization::MinimumFluidizations>) {
+    (void)law.with_derivatives(x);
+    return law(drag_state.fluid, particles, 9.81);
+  } else if constexpr (std::is_same_v<Registry, drag::DragLaws>) {
+    (void)law.with_derivatives(drag_state);
+    return number_of(law(drag_state));
+  } else if constexpr (std::is_same_v<Registry, elastic::ElasticModuli>) {
+    if constexpr (requires { law(equilibrium); }) {
+      (void)law.with_derivatives(equilibrium);
+      return law(equilibrium);
+    } else {  // off equilibrium
+      (void)law.with_derivatives(drag_state);
+      return law(drag_state);
+    }
+  } else if constexpr (is_one_of<Registry, RadialDistributions, FrictionalPressures>) {
+    (void)law.with_derivatives(phi);
+    return law(phi);
+  } else if constexpr (std::is_same_v<Registry, MixtureRadialDistributions>) {
+    (void)law.with_derivatives(fractions, diameter_span, 0, 1);
+    return law(std::span<const double>(fractions), diameter_span, 0, 1);
+  } else if constexpr (is_one_of<Registry, GranularPressures, ShearViscosities, BulkViscosities, Conductivities,
+                                 Dissipations>) {
+    (void)law.with_derivatives(phi, theta, rdf, m);
+    return law(phi, theta, g0, m);
+  } else if constexpr (std::is_same_v<Registry, FrictionalViscosities>) {
+    (void)law.with_derivatives(x, rate);
+    return law(x, rate);
+  } else if constexpr (std::is_same_v<Registry, FrictionalStresses>) {
+    (void)law.with_derivatives(phi, theta, m.diameter, rate);
+    return number_of(law(phi, theta, m.diameter, rate));
+  } else if constexpr (std::is_same_v<Registry, GasExchangeSources>) {
+    if constexpr (std::is_same_v<Law, KochSanganiSource>) {
+      (void)law.with_derivatives(phi, theta, rdf, slip, gas_viscosity, m);
+      return law(phi, theta, g0, slip, gas_viscosity, m);
+    } else {
+      (void)law.with_derivatives(phi, theta, beta, slip, m);
+      return law(phi, theta, beta, slip, m);
+    }
+  } else if constexpr (std::is_same_v<Registry, SolidSolidDrags>) {
+    (void)law.with_derivatives(0.6 * phi, 0.4 * phi, particles, small, 0.9, g0, slip);
+    return law(0.6 * phi, 0.4 * phi, particles, small, 0.9, g0, slip);
+  } else {
+    static_assert(sizeof(Law) == 0, "a registry without a calling shape in evaluate_closure");
+    return 0;
+  }
+}
+
+template <class Registry>
+constexpr int closures_in() {
+  return int(std::tuple_size_v<decltype(Registry::instances())>);
+}
+constexpr int registered_closures = [] {
+  int n = 0;
+  Registries::for_each([&](auto registry) { n += closures_in<typename decltype(registry)::type>(); });
+  return n;
+}();
+
+FLUIDBED_HOST_DEVICE void registry_cell(int i, double* out) {
+  double* slot = out + i * registered_closures;
+  Registries::for_each([&](auto registry) {
+    using Registry = typename decltype(registry)::type;
+    std::apply([&](const auto&... law) { ((*slot++ = evaluate_closure<Registry>(law, i)), ...); },
+               Registry::instances());
+  });
 }
 
 // Moments of a log-normal size distribution, mean 100–200 µm, spread 0.3.
@@ -125,6 +232,7 @@ int main() {
   // iteration amplify that by a few orders, hence 1e-10 rather than exact equality.
   constexpr double tolerance = 1e-10;
   const double worst[] = {device_host_difference<drag_cell>(laws * outputs_per_law, "drag"),
+                          device_host_difference<registry_cell>(registered_closures, "registries"),
                           device_host_difference<quadrature_cell>(7, "inversion"),
                           device_host_difference<kinetic_theory_cell>(3, "kinetic theory"),
                           device_host_difference<elastic_cell>(3, "elastic force")};

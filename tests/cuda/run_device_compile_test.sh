@@ -28,7 +28,7 @@ if [ "$step" = compile ] || [ ! -x "$program" ]; then
     -diag-suppress 20012 -Werror all-warnings -Xcompiler -Wall,-Wextra \
     "$source_dir/tests/cuda/device_kernels.cu" -o "$program.new"
   mv "$program.new" "$program"
-  echo "the drag family, moment inversion, the kinetic-theory set and the elastic force compiled as device code"
+  echo "every closure of every registry, moment inversion, the kinetic-theory set and the elastic force compiled as device code"
 fi
 [ "$step" = compile ] && exit 0
 "$program"

@@ -6,6 +6,13 @@
 //   fluidbed::<function>: argument '<argument>' = <value> is out of domain (<requirement>)
 // Every helper rejects NaN and ±∞. require_finite_result checks a result the same way.
 // Numbers are written with 17 significant digits (std::to_chars), without <sstream>.
+//
+// The only header of the library that throws (tests/check_layering.py checks it). The family
+// bases' checked members, which call these helpers, are host functions beside the
+// FLUIDBED_HOST_DEVICE hot paths of the same closures; device code instantiates the hot paths
+// only, and nvcc reports a host function reached from device code, so the CUDA build of every
+// registry's closures (tests/cuda/, every warning an error) shows that no device path reaches
+// this header's code.
 #pragma once
 
 #include "config.hpp"  // first: its C++20 check precedes any C++20-only header
@@ -56,6 +63,12 @@ template <class T>
                                      std::string_view requirement) {
   throw std::domain_error("fluidbed::" + std::string(function) + ": argument '" + std::string(argument) +
                           "' = " + number_text(value) + " is out of domain (" + std::string(requirement) + ")");
+}
+
+// A registry's make() of a name it does not list (registry.hpp).
+[[noreturn]] inline void throw_unknown_closure(std::string_view what, std::string_view name, std::string_view known) {
+  throw std::invalid_argument("fluidbed: unknown " + std::string(what) + " '" + std::string(name) +
+                              "'; known: " + std::string(known));
 }
 
 template <class T>

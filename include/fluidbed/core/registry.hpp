@@ -22,12 +22,13 @@
 #include <array>
 #include <cstddef>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
 #include <variant>
+
+#include "errors.hpp"
 
 namespace fluidbed {
 
@@ -86,8 +87,7 @@ struct Registry {
     if (auto law = find(name)) return *law;
     std::string known;
     for (const Variant& law : all()) known += (known.empty() ? "" : ", ") + std::string(name_of(law));
-    throw std::invalid_argument("fluidbed: unknown " + std::string(Family::what) + " '" + std::string(name) +
-                                "'; known: " + known);
+    detail::throw_unknown_closure(Family::what, name, known);
   }
 
   // True if no two instances share a name (a registry test; names are unique library-wide).

@@ -26,7 +26,8 @@ namespace fluidbed::single_particle {
 // dRe_t/dAr follows from the implicit function theorem on the balance,
 // 1/(¾ d(C_D Re · Re)/dRe) at Re_t (1/18 at Ar = 0); in the gap above it is that of the
 // branch Re_t = 1000 sits on, where the true slope of the flat Re_t(Ar) is 0.
-// Validity: Re_t up to about 2·10⁵.
+// Validity: Re_t up to about 2·10⁵. Host only: the solve is Boost.Math's TOMS 748, which has
+// no device code (the closed forms of this family run on a GPU).
 struct SchillerNaumannTerminalVelocity : ArchimedesCorrelation<SchillerNaumannTerminalVelocity> {
   constexpr std::string_view name() const { return "SchillerNaumannTerminalVelocity"; }
   constexpr std::string_view reference() const {
