@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "closure_metadata.hpp"
 #include "fluidbed/registries.hpp"
 
 namespace {
@@ -20,32 +21,10 @@ namespace {
 using namespace fluidbed;
 
 // Every closure instance of every registry, as (name, reference, validity intervals).
-struct Entry {
-  std::string name;
-  std::string reference;
-  std::vector<ValidityInterval> validity;
-};
-
-template <class Law>
-std::vector<ValidityInterval> validity_of(const Law& law) {
-  const auto v = law.validity();
-  if constexpr (requires { v.voidage_min; })  // a drag law's box (drag::ValidityRange)
-    return {{"voidage", v.voidage_min, v.voidage_max}, {"reynolds", v.reynolds_min, v.reynolds_max}};
-  else
-    return {v.begin(), v.end()};
-}
-
-std::vector<Entry> every_closure() {
-  std::vector<Entry> entries;
-  Registries::for_each([&](auto registry) {
-    using Registry = typename decltype(registry)::type;
-    for (const auto& law : Registry::all())
-      std::visit(
-          [&](const auto& l) {
-            entries.push_back({std::string(l.name()), std::string(l.reference()), validity_of(l)});
-          },
-          law);
-  });
+std::vector<test::ClosureMetadata> every_closure() {
+  std::vector<test::ClosureMetadata> entries;
+  for (const test::FamilyMetadata& family : test::every_family())
+    entries.insert(entries.end(), family.closures.begin(), family.closures.end());
   return entries;
 }
 
@@ -82,7 +61,7 @@ struct MyDrag : drag::DragLaw<MyDrag> {
 
 TEST_CASE("registries: every closure's name is unique across the library and found by name") {
   std::set<std::string> seen;
-  for (const Entry& e : every_closure()) {
+  for (const test::ClosureMetadata& e : every_closure()) {
     INFO("closure ", e.name);
     CHECK(seen.insert(e.name).second);
   }
@@ -113,9 +92,8 @@ TEST_CASE("registries: a user's law joins a family without editing the library")
 
 TEST_CASE("registries: each closure's metadata — reference and validity — is well formed and catalogued") {
   const std::vector<std::string> sections = catalogue_sections();
-  const std::regex doi(R"(doi:(\S+?)[,;)]?(\s|$))");
   const std::regex year(R"(\((1[89]\d\d|20\d\d)\))");
-  for (const Entry& e : every_closure()) {
+  for (const test::ClosureMetadata& e : every_closure()) {
     INFO("closure ", e.name, ", reference: ", e.reference);
     std::smatch year_match;
     REQUIRE(std::regex_search(e.reference, year_match, year));
@@ -135,9 +113,9 @@ TEST_CASE("registries: each closure's metadata — reference and validity — is
     REQUIRE(matching.size() >= 1);
     const std::string& section = *matching.front();
     CHECK(section.find(year_match[1].str()) != std::string::npos);
-    for (std::sregex_iterator it(e.reference.begin(), e.reference.end(), doi), end; it != end; ++it) {
-      INFO("DOI ", (*it)[1].str());
-      CHECK(section.find((*it)[1].str()) != std::string::npos);
+    for (const std::string& doi : test::dois_of(e.reference)) {
+      INFO("DOI ", doi);
+      CHECK(section.find(doi) != std::string::npos);
     }
   }
 }

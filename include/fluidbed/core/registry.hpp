@@ -14,7 +14,9 @@
 // A law type provides name() (unique across the library), and optionally a static
 // `registered()` returning a std::array of its instances (presets); without it the
 // registry holds one default-constructed instance. Family provides `static constexpr
-// std::string_view what`, the kind of closure in an error message ("drag law").
+// std::string_view what`, the kind of closure in an error message ("drag law"), and
+// `convention`, what the family's closures return (quantity, units, sign) and the definitions
+// of their arguments, which the generated catalogue (docs/catalogue.md) prints.
 #pragma once
 
 #include "config.hpp"  // first: its C++20 check precedes any C++20-only header

@@ -30,6 +30,11 @@ namespace fluidbed::drag {
 
 struct DragFamily {
   static constexpr std::string_view what = "drag law";
+  static constexpr std::string_view convention =
+      "β [kg m⁻³ s⁻¹] per unit volume of suspension: the drag on the particles per unit volume is β (u_f − "
+      "v_p). Each law is written in its native buoyancy convention, classical (−φ ρ_f g) or pressure-gradient "
+      "(−φ ∇p), and gives both, β_pg = ε β_cl. Re = ρ_f ε w d/μ_f with w = |u_f − v_p| the interstitial slip, "
+      "unless a law says otherwise (Syamlal–O'Brien: ρ_f w d/μ_f; Koch–Hill: Hill's Re/2).";
 };
 
 // The registry of the family: every law, each preset included (registry.hpp). Extend it

@@ -400,6 +400,12 @@ struct MazzeiLettieriModulus : ElasticModulus<MazzeiLettieriModulus> {
 
 struct ElasticModulusFamily {
   static constexpr std::string_view what = "elastic modulus";
+  static constexpr std::string_view convention =
+      "The elastic modulus E = −(2/3) d H |n f_d| [Pa], H < 0 the sensitivity of the drag to the voidage; the "
+      "elastic force per unit volume of suspension, exerted by the fluid on the particles, is E (∇ε · n_d) "
+      "n_d, n_d the unit vector of the drag. At equilibrium Jean–Fan and Mazzei–Lettieri take the "
+      "classical-buoyancy drag φ (ρ_p − ρ_f) g, Foscolo–Gibilaro the pressure-gradient drag ε φ (ρ_p − ρ_f) "
+      "g.";
 };
 
 // The registry of the family (core/registry.hpp). Extend it with a model of your own:

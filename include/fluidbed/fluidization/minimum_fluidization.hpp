@@ -99,6 +99,9 @@ struct WenYuMinimumFluidization : single_particle::ArchimedesCorrelation<WenYuMi
 
 struct MinimumFluidizationFamily {
   static constexpr std::string_view what = "minimum fluidization correlation";
+  static constexpr std::string_view convention =
+      "Re_mf = ρ_f u_mf d/μ_f with u_mf [m s⁻¹] the superficial fluid velocity at minimum fluidization, as a "
+      "function of Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f²; d is the volume-equivalent sphere diameter, ρ_p > ρ_f.";
 };
 
 // The minimum fluidization correlations (Ergun at its defaults ε_mf = 0.4, φ_s = 1); extend

@@ -303,6 +303,10 @@ struct GarsideAlDibouniExponent : RichardsonZakiExponent<GarsideAlDibouniExponen
 
 struct RichardsonZakiExponentFamily {
   static constexpr std::string_view what = "Richardson-Zaki exponent";
+  static constexpr std::string_view convention =
+      "The dimensionless exponent n of the Richardson–Zaki law u_s = u_t ε^n (u_s the superficial fluid or "
+      "sedimentation velocity, u_t the unhindered terminal velocity), as a function of Re_t = ρ_f u_t d/μ_f "
+      "(Khan–Richardson: of Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f²) and, where a law has one, of the wall ratio d/D.";
 };
 
 // The exponent correlations, each at d/D = 0; extend with `RichardsonZakiExponents::with<MyLaw>`.

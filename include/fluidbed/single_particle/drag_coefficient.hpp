@@ -136,6 +136,10 @@ struct DallavalleCoefficient : SphereDragCoefficient<DallavalleCoefficient> {
 
 struct DragCoefficientFamily {
   static constexpr std::string_view what = "single-sphere drag coefficient";
+  static constexpr std::string_view convention =
+      "The product C_D·Re of one sphere, dimensionless, finite at Re = 0 where C_D diverges. Re is the "
+      "particle Reynolds number the caller passes: ρ_f ε w d/μ_f inside a suspension law, ρ_f u d/μ_f for a "
+      "free particle.";
 };
 
 // The single-sphere drag coefficients; extend with `DragCoefficients::with<MyCoefficient>`.

@@ -58,6 +58,10 @@ struct SchillerNaumannTerminalVelocity : ArchimedesCorrelation<SchillerNaumannTe
 
 struct TerminalVelocityFamily {
   static constexpr std::string_view what = "terminal velocity";
+  static constexpr std::string_view convention =
+      "The terminal Reynolds number Re_t = ρ_f u_t d/μ_f of one sphere settling in an unbounded fluid, as a "
+      "function of Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f² (the balance ¾ C_D(Re_t) Re_t² = Ar), and its terminal "
+      "velocity u_t = Re_t μ_f/(ρ_f d) [m s⁻¹]; heavier-than-fluid particles only (ρ_p > ρ_f).";
 };
 
 // The terminal-velocity forms; extend with `TerminalVelocities::with<MyForm>`.
