@@ -91,8 +91,8 @@ struct WenYuMinimumFluidization : single_particle::ArchimedesCorrelation<WenYuMi
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
     using std::sqrt;
     using T = value_type_of<S>;
-    const T c = T(33.7L);
-    const S k = T(0.0408L) * archimedes;
+    const T c = FLUIDBED_DECIMAL(T, 33.7);
+    const S k = FLUIDBED_DECIMAL(T, 0.0408) * archimedes;
     return k / (sqrt(c * c + k) + c);
   }
 };

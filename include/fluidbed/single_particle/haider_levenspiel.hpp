@@ -53,7 +53,7 @@ struct HaiderLevenspielTerminalVelocity : ArchimedesCorrelation<HaiderLevenspiel
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
     using std::sqrt;
     using T = value_type_of<S>;
-    const T c = T(2.3348L) - T(1.7439L) * T(sphericity);
+    const T c = FLUIDBED_DECIMAL(T, 2.3348) - FLUIDBED_DECIMAL(T, 1.7439) * T(sphericity);
     return archimedes / (18 + c * sqrt(archimedes));
   }
 };
