@@ -36,14 +36,14 @@ namespace fluidbed::fluidization {
 // (1 − ε_mf)(ρ_p − ρ_f) g; for φ_s = 1 it is the equilibrium, eq. 3.28, of seed 000's Ergun
 // drag, eq. 3.32, which gives the u_mf = 8.73·10⁻³ m s⁻¹ of its §4.3.3). A quadratic a Re² + b Re = Ar, solved in the
 // cancellation-free form Re_mf = 2 Ar / (b + √(b² + 4 a Ar)).
-// Parameters: ε_mf ∈ (0, 1) (default 0.4, seed 000 §4.3.3), φ_s ∈ (0, 1] (default 1), held
-// as long double so that a float, double or long double value is held exactly.
+// Parameters: ε_mf ∈ (0, 1) (default 0.4, seed 000 §4.3.3), φ_s ∈ (0, 1] (default 1), doubles
+// like every law's parameters.
 // Validity: Ergun's, all Re_mf; ε_mf and φ_s as measured for the bed.
 struct ErgunMinimumFluidization : single_particle::ArchimedesCorrelation<ErgunMinimumFluidization> {
-  long double voidage;     // ε_mf
-  long double sphericity;  // φ_s
+  double voidage;     // ε_mf
+  double sphericity;  // φ_s
 
-  constexpr explicit ErgunMinimumFluidization(long double voidage = 0.4L, long double sphericity = 1)
+  constexpr explicit ErgunMinimumFluidization(double voidage = 0.4, double sphericity = 1)
       : voidage(voidage), sphericity(sphericity) {}
 
   constexpr std::string_view name() const { return "ErgunMinimumFluidization"; }

@@ -171,9 +171,9 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
 // Parameter: d/D ∈ [0, 1) (default 0).
 struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exponent> {
   static constexpr std::string_view argument = "terminal_reynolds";
-  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+  double wall_ratio;  // d/D
 
-  constexpr explicit RichardsonZaki1954Exponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+  constexpr explicit RichardsonZaki1954Exponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
 
   constexpr std::string_view name() const { return "RichardsonZaki1954Exponent"; }
   constexpr std::string_view reference() const {
@@ -241,9 +241,9 @@ struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
 // data, and such d/D are out of domain. Parameter: d/D ∈ [0, 0.0391) (default 0).
 struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
   static constexpr std::string_view argument = "archimedes";
-  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+  double wall_ratio;  // d/D
 
-  constexpr explicit KhanRichardsonExponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+  constexpr explicit KhanRichardsonExponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
 
   constexpr std::string_view name() const { return "KhanRichardsonExponent"; }
   constexpr std::string_view reference() const {
