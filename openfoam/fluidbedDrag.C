@@ -1,0 +1,136 @@
+#include "fluidbedDrag.H"
+#include "phasePair.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace dragModels
+{
+    defineTypeNameAndDebug(fluidbedDrag, 0);
+    addToRunTimeSelectionTable(dragModel, fluidbedDrag, dictionary);
+}
+}
+
+
+Foam::dragModels::fluidbedDrag::fluidbedDrag
+(
+    const dictionary& dict,
+    const phasePair& pair,
+    const bool registerObject
+)
+:
+    dragModel(pair, registerObject)
+{
+    const word name(dict.get<word>("law"));
+    char message[1024];
+    law_.reset(fluidbed_drag_law_create(name.c_str(), message, sizeof message));
+    if (!law_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "fluidbed: " << message << exit(FatalIOError);
+    }
+    Info<< "fluidbed drag law " << fluidbed_drag_law_name(law_.get())
+        << " for " << pair.name() << endl;
+}
+
+
+void Foam::dragModels::fluidbedDrag::evaluate
+(
+    label n,
+    const scalar* voidage,
+    const scalar* slip,
+    const scalar* rho,
+    const scalar* mu,
+    const scalar* d,
+    scalar* beta
+) const
+{
+    char message[1024];
+    const size_t size = static_cast<size_t>(n);
+    const size_t bad = fluidbed_drag_law_pressure_gradient_beta
+    (
+        law_.get(), size, voidage, slip, rho, mu, d, beta,
+        message, sizeof message
+    );
+    if (bad != size)
+    {
+        FatalErrorInFunction
+            << "fluidbed law " << fluidbed_drag_law_name(law_.get())
+            << " for " << pair_.name() << ", element " << bad << ": "
+            << message << exit(FatalError);
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
+{
+    const fvMesh& mesh = pair_.phase1().mesh();
+
+    volScalarField voidage("fluidbed:voidage", pair_.continuous());
+    voidage.min(dimensionedScalar("one", dimless, 1.0));
+    const tmp<volScalarField> tslip(pair_.magUr());
+    const volScalarField& rho = pair_.continuous().rho();
+    const tmp<volScalarField> tmu(pair_.continuous().mu());
+    const tmp<volScalarField> td(pair_.dispersed().d());
+
+    tmp<volScalarField> tK
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                IOobject::groupName("fluidbed:K", pair_.name()),
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimK, Zero)
+        )
+    );
+    volScalarField& K = tK.ref();
+
+    evaluate
+    (
+        mesh.nCells(),
+        voidage.primitiveField().cdata(),
+        tslip().primitiveField().cdata(),
+        rho.primitiveField().cdata(),
+        tmu().primitiveField().cdata(),
+        td().primitiveField().cdata(),
+        K.primitiveFieldRef().data()
+    );
+
+    volScalarField::Boundary& Kb = K.boundaryFieldRef();
+    forAll(Kb, patchi)
+    {
+        evaluate
+        (
+            Kb[patchi].size(),
+            voidage.boundaryField()[patchi].cdata(),
+            tslip().boundaryField()[patchi].cdata(),
+            rho.boundaryField()[patchi].cdata(),
+            tmu().boundaryField()[patchi].cdata(),
+            td().boundaryField()[patchi].cdata(),
+            Kb[patchi].data()
+        );
+    }
+
+    return tK;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::Ki() const
+{
+    return K()/max(pair_.dispersed(), pair_.dispersed().residualAlpha());
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::CdRe() const
+{
+    return
+        Ki()*sqr(pair_.dispersed().d())
+       /(0.75*pair_.continuous().rho()*pair_.continuous().nu());
+}
