@@ -19,7 +19,9 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
     const bool registerObject
 )
 :
-    dragModel(pair, registerObject)
+    dragModel(pair, registerObject),
+    compareMinAlpha_(1e-4),
+    comparedTimeIndex_(-1)
 {
     const word name(dict.get<word>("law"));
     char message[1024];
@@ -27,10 +29,63 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
     if (!law_)
     {
         FatalIOErrorInFunction(dict)
-            << "fluidbed: " << message << exit(FatalIOError);
+            << message << exit(FatalIOError);
     }
     Info<< "fluidbed drag law " << fluidbed_drag_law_name(law_.get())
         << " for " << pair.name() << endl;
+
+    if (dict.found("compareWith"))
+    {
+        const dictionary& compareDict = dict.subDict("compareWith");
+        const word type(compareDict.get<word>("type"));
+        compareDict.readIfPresent("minAlpha", compareMinAlpha_);
+        auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
+        if (!cstrIter.found())
+        {
+            FatalIOErrorInLookup
+            (
+                compareDict, "dragModel", type, *dictionaryConstructorTablePtr_
+            ) << exit(FatalIOError);
+        }
+        // Not registered: the solver's registry holds this model under the
+        // name that both would take.
+        reference_.reset(cstrIter()(compareDict, pair, false).ptr());
+    }
+}
+
+
+void Foam::dragModels::fluidbedDrag::compare(const volScalarField& K) const
+{
+    const label timeIndex = K.mesh().time().timeIndex();
+    if (timeIndex == comparedTimeIndex_)
+    {
+        return;
+    }
+    comparedTimeIndex_ = timeIndex;
+
+    const tmp<volScalarField> tKref(reference_->K());
+    const scalarField& Kref = tKref().primitiveField();
+    const scalarField& alpha = pair_.dispersed().primitiveField();
+    scalar maxRelative = 0;
+    label compared = 0;
+    forAll(Kref, celli)
+    {
+        if (alpha[celli] >= compareMinAlpha_)
+        {
+            maxRelative = max
+            (
+                maxRelative,
+                mag(K[celli] - Kref[celli])/mag(Kref[celli])
+            );
+            ++compared;
+        }
+    }
+    reduce(maxRelative, maxOp<scalar>());
+    reduce(compared, sumOp<label>());
+    Info<< "fluidbed: K of " << fluidbed_drag_law_name(law_.get())
+        << " against " << reference_->type() << ": max relative difference "
+        << maxRelative << " over " << compared << " cells with alpha >= "
+        << compareMinAlpha_ << endl;
 }
 
 
@@ -116,6 +171,11 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
             td().boundaryField()[patchi].cdata(),
             Kb[patchi].data()
         );
+    }
+
+    if (reference_.valid())
+    {
+        compare(K);
     }
 
     return tK;
