@@ -1,6 +1,7 @@
-/* fluidbed — the narrow C interface between the OpenFOAM plugin (C++14, OpenFOAM's headers) and
- * fluidbed's drag registry (C++20). OpenFOAM v1912's headers do not compile as C++20 and fluidbed's
- * do not compile as C++14, so the two meet only here: plain types, whole arrays, no exceptions. */
+/* fluidbed — the narrow C interface between the OpenFOAM plugin (OpenFOAM's headers, in the C++
+ * standard OpenFOAM is built with: C++11 for v1912) and fluidbed's drag registry (C++20). OpenFOAM
+ * v1912's headers do not compile as C++20 and fluidbed's need it, so the two meet only here: plain
+ * types, whole arrays, no exceptions. */
 #ifndef FLUIDBED_DRAG_BRIDGE_H
 #define FLUIDBED_DRAG_BRIDGE_H
 
