@@ -117,24 +117,27 @@ void Foam::dragModels::fluidbedDrag::evaluate
 }
 
 
-Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
+Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
+(
+    const scalar maxVoidage
+) const
 {
     const fvMesh& mesh = pair_.phase1().mesh();
 
     volScalarField voidage("fluidbed:voidage", pair_.continuous());
-    voidage.min(dimensionedScalar("one", dimless, 1.0));
+    voidage.min(dimensionedScalar("maxVoidage", dimless, maxVoidage));
     const tmp<volScalarField> tslip(pair_.magUr());
     const volScalarField& rho = pair_.continuous().rho();
     const tmp<volScalarField> tmu(pair_.continuous().mu());
     const tmp<volScalarField> td(pair_.dispersed().d());
 
-    tmp<volScalarField> tK
+    tmp<volScalarField> tbeta
     (
         new volScalarField
         (
             IOobject
             (
-                IOobject::groupName("fluidbed:K", pair_.name()),
+                IOobject::groupName("fluidbed:beta", pair_.name()),
                 mesh.time().timeName(),
                 mesh,
                 IOobject::NO_READ,
@@ -145,7 +148,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
             dimensionedScalar(dimK, Zero)
         )
     );
-    volScalarField& K = tK.ref();
+    volScalarField& beta = tbeta.ref();
 
     evaluate
     (
@@ -155,36 +158,49 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
         rho.primitiveField().cdata(),
         tmu().primitiveField().cdata(),
         td().primitiveField().cdata(),
-        K.primitiveFieldRef().data()
+        beta.primitiveFieldRef().data()
     );
 
-    volScalarField::Boundary& Kb = K.boundaryFieldRef();
-    forAll(Kb, patchi)
+    volScalarField::Boundary& betab = beta.boundaryFieldRef();
+    forAll(betab, patchi)
     {
         evaluate
         (
-            Kb[patchi].size(),
+            betab[patchi].size(),
             voidage.boundaryField()[patchi].cdata(),
             tslip().boundaryField()[patchi].cdata(),
             rho.boundaryField()[patchi].cdata(),
             tmu().boundaryField()[patchi].cdata(),
             td().boundaryField()[patchi].cdata(),
-            Kb[patchi].data()
+            betab[patchi].data()
         );
     }
 
+    return tbeta;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
+{
+    tmp<volScalarField> tK(beta(1));
     if (reference_.valid())
     {
-        compare(K);
+        compare(tK());
     }
-
     return tK;
 }
 
 
 Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::Ki() const
 {
-    return K()/max(pair_.dispersed(), pair_.dispersed().residualAlpha());
+    // Ki is K per particle fraction; where there are (almost) no particles
+    // its limit is taken at the dispersed fraction residualAlpha, so that the
+    // face coefficient Kf (interpolated Ki times the face fraction) keeps the
+    // finite per-particle drag of those cells instead of 0.
+    const scalar residual = pair_.dispersed().residualAlpha().value();
+    return
+        beta(1 - residual)
+       /max(pair_.dispersed(), pair_.dispersed().residualAlpha());
 }
 
 
