@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+"""Largest differences between the cell values of OpenFOAM fields in two time folders.
+
+Usage: compare_fields.py DIR_A DIR_B FIELD[:TOLERANCE] ...
+
+For each field (an ASCII volScalarField or volVectorField file present in both folders) prints
+the largest absolute difference of its internal values (all vector components together) and the
+largest absolute value in DIR_A. With a tolerance, exits 1 when the difference exceeds it.
+Python 3 standard library only.
+"""
+
+import re
+import sys
+from pathlib import Path
+
+
+def internal_values(path):
+    text = Path(path).read_text()
+    start = text.index("internalField")
+    uniform = re.match(r"internalField\s+uniform\s+(\([^)]*\)|\S+?);", text[start:])
+    if uniform:
+        return [float(x) for x in uniform.group(1).strip("()").split()]
+    header = re.match(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text[start:])
+    count, body = int(header.group(2)), text[start + header.end():]
+    if header.group(1) == "scalar":
+        return [float(x) for x in body.split(None, count)[:count]]
+    return [float(x) for vector in re.findall(r"\(([^()]*)\)", body)[:count] for x in vector.split()]
+
+
+def main(argv):
+    if len(argv) < 4:
+        sys.exit(__doc__)
+    failed = False
+    for spec in argv[3:]:
+        name, _, tolerance = spec.partition(":")
+        a, b = internal_values(Path(argv[1]) / name), internal_values(Path(argv[2]) / name)
+        if len(a) != len(b):
+            sys.exit(f"{name}: {len(a)} values against {len(b)}")
+        difference = max(abs(x - y) for x, y in zip(a, b))
+        verdict = ""
+        if tolerance:
+            failed |= difference > float(tolerance)
+            verdict = " FAILS" if difference > float(tolerance) else " ok"
+        print(f"{name}: max |difference| {difference:.3e}, max |value| {max(map(abs, a)):.3e}{verdict}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

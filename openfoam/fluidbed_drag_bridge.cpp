@@ -1,0 +1,64 @@
+// fluidbed — the C++20 side of the OpenFOAM plugin's interface (fluidbed_drag_bridge.h): the drag
+// registry evaluated over whole arrays, one dispatch on the law per array, not per cell.
+#include "fluidbed_drag_bridge.h"
+
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "fluidbed/drag.hpp"
+
+struct fluidbed_drag_law {
+  fluidbed::drag::AnyDragLaw law;
+  std::string name;  // name() is a view, not necessarily terminated
+};
+
+namespace {
+
+void write_message(std::string_view text, char* message, size_t message_size) {
+  if (message == nullptr || message_size == 0) return;
+  const size_t n = std::min(text.size(), message_size - 1);
+  std::memcpy(message, text.data(), n);
+  message[n] = '\0';
+}
+
+}  // namespace
+
+extern "C" fluidbed_drag_law* fluidbed_drag_law_create(const char* name, char* message, size_t message_size) {
+  try {
+    const fluidbed::drag::AnyDragLaw law = fluidbed::drag::DragLaws::make(name);
+    return new fluidbed_drag_law{law, std::string(fluidbed::drag::name_of(law))};
+  } catch (const std::exception& e) {
+    write_message(e.what(), message, message_size);
+    return nullptr;
+  }
+}
+
+extern "C" void fluidbed_drag_law_destroy(fluidbed_drag_law* law) { delete law; }
+
+extern "C" const char* fluidbed_drag_law_name(const fluidbed_drag_law* law) { return law->name.c_str(); }
+
+extern "C" size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_law* law, size_t n,
+                                                           const double* voidage, const double* slip,
+                                                           const double* fluid_density, const double* fluid_viscosity,
+                                                           const double* diameter, double* beta, char* message,
+                                                           size_t message_size) {
+  size_t i = 0;
+  try {
+    std::visit(
+        [&](const auto& l) {
+          for (; i < n; ++i) {
+            const fluidbed::drag::DragState<double> state{
+                voidage[i], slip[i], {fluid_density[i], fluid_viscosity[i]}, diameter[i]};
+            beta[i] = l.checked(state).pressure_gradient();
+          }
+        },
+        law->law);
+  } catch (const std::exception& e) {
+    write_message(e.what(), message, message_size);
+  }
+  return i;
+}
