@@ -1,0 +1,9 @@
+// The drag family's row tests (test_scalar_types_drag.hpp) in cpp_bin_float_50, with the same
+// tolerances in units of the type's epsilon (5.3e-51) as in the built-in types: they hold only
+// where every published coefficient is exact to 50 digits.
+#include "test_scalar_types_50_digits.hpp"
+#include "test_scalar_types_drag.hpp"
+
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_drag_laws, fluidbed::test::Digits50);
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_single_sphere, fluidbed::test::Digits50);
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_beetstra, fluidbed::test::Digits50);
