@@ -50,7 +50,7 @@ T required(const std::optional<T>& value) {
 }
 
 // Every quantity of the table's settling rows, as a function of the row in T (a law's parameters,
-// long double members, from the row's long double inputs).
+// the row's inputs in double, exact: every law parameter is a double).
 template <class T>
 std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_quantities() {
   using Row = test::ScalarTypeRow;
@@ -62,9 +62,9 @@ std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_qua
       {"rz_exponent_garside_aldibouni1977",
        [](const Row& r) { return settling::GarsideAlDibouniExponent{}(r.in<T>(0)); }},
       {"rz_exponent_khan_richardson1989",
-       [](const Row& r) { return settling::KhanRichardsonExponent{r.p[1]}(r.in<T>(0)); }},
+       [](const Row& r) { return settling::KhanRichardsonExponent{r.in<double>(1)}(r.in<T>(0)); }},
       {"rz_exponent_richardson_zaki1954",
-       [](const Row& r) { return settling::RichardsonZaki1954Exponent{r.p[1]}(r.in<T>(0)); }},
+       [](const Row& r) { return settling::RichardsonZaki1954Exponent{r.in<double>(1)}(r.in<T>(0)); }},
       {"richardson_zaki_velocity",
        [](const Row& r) { return settling::richardson_zaki_velocity(r.in<T>(0), r.in<T>(1), r.in<T>(2)); }},
       {"richardson_zaki_voidage",
@@ -97,11 +97,12 @@ std::map<std::string, std::function<T(const test::ScalarTypeRow&)>> settling_qua
        }},
       {"minimum_fluidization_velocity_ergun",
        [](const Row& r) {
-         return fluidization::ErgunMinimumFluidization{r.p[4], r.p[5]}(fluid_of<T>(r, 0), particles_of<T>(r, 0));
+         return fluidization::ErgunMinimumFluidization{r.in<double>(4), r.in<double>(5)}(fluid_of<T>(r, 0),
+                                                                                         particles_of<T>(r, 0));
        }},
       {"minimum_fluidization_reynolds_ergun",
        [](const Row& r) {
-         return fluidization::ErgunMinimumFluidization{r.p[1], r.p[2]}.reynolds(r.in<T>(0));
+         return fluidization::ErgunMinimumFluidization{r.in<double>(1), r.in<double>(2)}.reynolds(r.in<T>(0));
        }},
       {"minimum_fluidization_velocity_wen_yu",
        [](const Row& r) { return fluidization::WenYuMinimumFluidization{}(fluid_of<T>(r, 0), particles_of<T>(r, 0)); }},
