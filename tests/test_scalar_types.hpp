@@ -54,6 +54,13 @@ struct Reference {
   }
 };
 
+// The multiple of the built-in types' tolerances that a type is allowed: 4 for a Boost.Multiprecision
+// type, whose pow, exp and log are not correctly rounded (Boost 1.74, cpp_bin_float_50: pow(x, y)
+// is off by up to about |y ln x| + 5 ε, 10 ε for pow(100, 0.75), where the built-in types' are
+// within an ulp). A coefficient good to long double's 19 digits only is still 1e30 ε off.
+template <class T>
+inline constexpr long double tolerance_factor = std::is_floating_point_v<T> ? 1 : 4;
+
 // One row of the table: a closure of a family at inputs p[0..7], its value and up to two
 // partial derivatives (the meaning of each per family: scalar_types_reference.py).
 struct ScalarTypeRow {

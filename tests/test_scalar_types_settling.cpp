@@ -43,6 +43,6 @@ TEST_CASE_TEMPLATE("Syamlal-O'Brien calibrated from minimum fluidization holds t
         fluidization::syamlal_obrien_from_minimum_fluidization(velocity, voidage, water, sand);
     INFO("eps_mf " << double(voidage) << ": c1 " << law.c1() << ", d1 " << law.d1());
     const T equilibrium = required(fluidization::equilibrium_voidage(law, velocity, water, sand));
-    CHECK(test::error_in_epsilons(equilibrium, static_cast<long double>(voidage)) <= chained_tolerance);
+    CHECK(test::error_in_epsilons(equilibrium, static_cast<long double>(voidage)) <= chained_tolerance<T>);
   }
 }
