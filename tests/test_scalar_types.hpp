@@ -4,10 +4,11 @@
 // scalar_types_reference.py), whose inputs every one of these types represents exactly and whose
 // values have 55 significant digits. A result then differs from the table only by the rounding
 // inside the closure, so the tolerances are multiples of the type's epsilon: the same multiple
-// for every type. The row tests of a family are defined once in test_scalar_types_<family>.hpp
-// and invoked for the built-in types in test_scalar_types_<family>.cpp and for cpp_bin_float_50
-// in test_scalar_types_50_digits_<family>.cpp (a file of its own: instantiating every closure in
-// a 50-digit type takes most of a translation unit's compile time).
+// for the built-in types, 4 times it for the 50-digit one (tolerance_factor). The row tests of a
+// family are defined once in test_scalar_types_<family>.hpp and invoked for the built-in types in
+// test_scalar_types_<family>.cpp and for cpp_bin_float_50 in
+// test_scalar_types_50_digits_<family>.cpp (files of their own, each compiling in about the time
+// of the three built-in types together, so that two cores build them side by side).
 #pragma once
 
 #include <doctest/doctest.h>

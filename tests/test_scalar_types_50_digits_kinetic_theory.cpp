@@ -2,8 +2,8 @@
 // type's epsilon (5.3e-51) with 4 times the built-in types' multiples (test::tolerance_factor):
 // they hold only where every published coefficient is exact to 50 digits; one good to long
 // double's 19 digits is 1e30 epsilons off.
-#include "test_scalar_types_50_digits.hpp"
+#include "cpp_bin_float_50.hpp"
 #include "test_scalar_types_kinetic_theory.hpp"
 
-TEST_CASE_TEMPLATE_INVOKE(scalar_types_kinetic_theory_laws, fluidbed::test::Digits50);
-TEST_CASE_TEMPLATE_INVOKE(scalar_types_kinetic_theory_others, fluidbed::test::Digits50);
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_kinetic_theory_laws, boost::multiprecision::cpp_bin_float_50);
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_kinetic_theory_others, boost::multiprecision::cpp_bin_float_50);

@@ -2,7 +2,7 @@
 // type's epsilon (5.3e-51) with 4 times the built-in types' multiples (test::tolerance_factor):
 // they hold only where every published coefficient is exact to 50 digits; one good to long
 // double's 19 digits is 1e30 epsilons off.
-#include "test_scalar_types_50_digits.hpp"
+#include "cpp_bin_float_50.hpp"
 #include "test_scalar_types_settling.hpp"
 
-TEST_CASE_TEMPLATE_INVOKE(scalar_types_settling, fluidbed::test::Digits50);
+TEST_CASE_TEMPLATE_INVOKE(scalar_types_settling, boost::multiprecision::cpp_bin_float_50);
