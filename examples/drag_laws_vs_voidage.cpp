@@ -125,7 +125,7 @@ bool meets_weight_line(const AnyDragLaw& law, const System& s, double equilibriu
   if (std::abs(at / weight - 1) <= 1e-8) return true;
   const double below = dimensionless_force(law, s, std::nextafter(equilibrium, 0.0));
   return std::holds_alternative<drag::GidaspowSwitched>(law) &&
-         equilibrium == drag::GidaspowSwitched::switch_voidage && std::min(at, below) <= weight &&
+         equilibrium == drag::GidaspowSwitched::switch_voidage<double>() && std::min(at, below) <= weight &&
          weight <= std::max(at, below);
 }
 
@@ -203,7 +203,7 @@ void add_law(plot::Panel& panel, const AnyDragLaw& law, int index, const System&
   const ValidityRange v = validity_of(law);
   const double re = reynolds_of(s);
   const bool switched = std::holds_alternative<drag::GidaspowSwitched>(law);
-  const double jump = drag::GidaspowSwitched::switch_voidage;
+  const double jump = drag::GidaspowSwitched::switch_voidage<double>();
 
   std::vector<double> voidages = plotted_voidages();
   for (double bound : {v.voidage_min, v.voidage_max})

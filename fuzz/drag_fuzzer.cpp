@@ -411,7 +411,7 @@ void free_functions(Input& in) {
     const SyamlalOBrien law;
     const T ratio = law.velocity_ratio(voidage, re);
     const T a = std::pow(voidage, T(4.14));
-    const T b = voidage <= T(SyamlalOBrien::switch_voidage) ? T(law.c1() * std::pow(voidage, T(1.28)))
+    const T b = voidage <= SyamlalOBrien::switch_voidage<T>() ? T(law.c1() * std::pow(voidage, T(1.28)))
                                                             : T(std::pow(voidage, T(law.d1())));
     FUZZ_CHECK(ratio >= std::min(a, b) * (T(1) - T(16) * eps) && ratio <= std::max(a, b) * (T(1) + T(16) * eps),
                "Syamlal-O'Brien V_r(voidage %.17g, Re_s %.17g) = %.17g outside [A %.17g, B %.17g]", double(voidage),

@@ -292,7 +292,7 @@ TEST_CASE("float at a switch voidage: value and derivative paths take the same b
   // The plain path once compared a float ε with the double constant (0.85f > 0.85) and the dual
   // path with the constant rounded to float (0.85f <= 0.85f): with_derivatives then evaluated the
   // other branch, 0.05 % to 0.1 % off for Syamlal–O'Brien's B, 11 % to 73 % for Gidaspow's switch.
-  // Both now compare with constant_as<T>; what is left between them is float rounding.
+  // Both now compare with the switch point in T; what is left between them is float rounding.
   for (const AnyDragLaw& law : all_drag_laws)
     std::visit(
         [](const auto& l) {
@@ -306,8 +306,8 @@ TEST_CASE("float at a switch voidage: value and derivative paths take the same b
               }
         },
         law);
-  CHECK(constant_as<float>(SyamlalOBrien::switch_voidage) == 0.85f);
-  CHECK(constant_as<Dual<float, 2>>(GidaspowSwitched::switch_voidage) == 0.8f);
+  CHECK(SyamlalOBrien::switch_voidage<float>() == 0.85f);
+  CHECK(GidaspowSwitched::switch_voidage<value_type_of<Dual<float, 2>>>() == 0.8f);
 }
 
 TEST_CASE("every law states a reference and a validity range that contains states and excludes others") {

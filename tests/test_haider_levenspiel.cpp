@@ -21,7 +21,7 @@ TEST_CASE_TEMPLATE("Haider-Levenspiel: Re_t and dRe_t/dAr agree with mpmath to a
   REQUIRE(table.size() == 66);
   const T eps = std::numeric_limits<T>::epsilon();
   for (std::size_t row = 0; row < table.size(); ++row) {
-    const HaiderLevenspielTerminalVelocity law(static_cast<long double>(table.number(row, "sphericity")));
+    const HaiderLevenspielTerminalVelocity law(table.number(row, "sphericity"));
     // Every input is a power of two (or 0): exact in T through stold.
     const T archimedes = T(std::stold(table.text(row, "archimedes")));
     const T expected = T(std::stold(table.text(row, "terminal_reynolds")));
@@ -35,7 +35,7 @@ TEST_CASE_TEMPLATE("Haider-Levenspiel: Re_t and dRe_t/dAr agree with mpmath to a
 }
 
 TEST_CASE("Haider-Levenspiel: a sphericity outside the fit's 0.5-1 is refused by the checked path") {
-  CHECK_THROWS_WITH_AS(HaiderLevenspielTerminalVelocity(0.4L).checked_reynolds(10.0),
+  CHECK_THROWS_WITH_AS(HaiderLevenspielTerminalVelocity(0.4).checked_reynolds(10.0),
                        doctest::Contains("fluidbed::HaiderLevenspielTerminalVelocity: argument 'sphericity' = 0.4"),
                        std::domain_error);
   CHECK_NOTHROW(HaiderLevenspielTerminalVelocity(0.5L).checked_reynolds(10.0));

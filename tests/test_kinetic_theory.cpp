@@ -344,7 +344,7 @@ TEST_CASE("the continuation beyond packing is continuous with a continuous slope
   check_c1(Ogawa{0.63}, 0.63);
   check_c1(SinclairJackson{0.6}, 0.6);
   check_c1(GidaspowRadialDistribution{0.64}, 0.64);
-  check_c1(MaAhmadi{}, MaAhmadi::max_packing, false);
+  check_c1(MaAhmadi{}, MaAhmadi::max_packing<double>(), false);
   // Lathouwers–Bellan continues each factor; their sum has a continuous slope too.
   const LathouwersBellan lb{0.64};
   const double c = 0.63;

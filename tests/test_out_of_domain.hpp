@@ -57,6 +57,12 @@ template <class T>
 using ValuesOf = std::vector<T>;
 using Values = ValuesOf<double>;
 
+// A law's parameter: a double member whatever the scalar type of the state.
+template <class T>
+double parameter(const ValuesOf<T>& v, std::size_t at) {
+  return double(v[at]);
+}
+
 // `head` followed by `tail`: the arguments of an entry point assembled from shared groups.
 inline std::vector<ArgumentCase> concatenated(std::vector<ArgumentCase> head, const std::vector<ArgumentCase>& tail) {
   head.insert(head.end(), tail.begin(), tail.end());

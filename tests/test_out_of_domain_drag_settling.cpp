@@ -161,13 +161,15 @@ TEST_CASE_TEMPLATE("out of domain: Richardson-Zaki exponents, law and inverse", 
                        [](const ValuesOf<T>& v) { return settling::RoweExponent{}.checked(v[0]); });
   check_entry_point<T>("GarsideAlDibouniExponent::checked", reynolds,
                        [](const ValuesOf<T>& v) { return settling::GarsideAlDibouniExponent{}.checked(v[0]); });
-  check_entry_point<T>("RichardsonZaki1954Exponent::checked",
-                       concatenated(reynolds, {{"wall_ratio", 0.01, outside_solid_fraction, {0.0}}}),
-                       [](const ValuesOf<T>& v) { return settling::RichardsonZaki1954Exponent{v[1]}.checked(v[0]); });
-  check_entry_point<T>("KhanRichardsonExponent::checked",
-                       {{"archimedes", 100.0, negative, {0.0}},
-                        {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
-                       [](const ValuesOf<T>& v) { return settling::KhanRichardsonExponent{v[1]}.checked(v[0]); });
+  check_entry_point<T>(
+      "RichardsonZaki1954Exponent::checked",
+      concatenated(reynolds, {{"wall_ratio", 0.01, outside_solid_fraction, {0.0}}}),
+      [](const ValuesOf<T>& v) { return settling::RichardsonZaki1954Exponent{parameter(v, 1)}.checked(v[0]); });
+  check_entry_point<T>(
+      "KhanRichardsonExponent::checked",
+      {{"archimedes", 100.0, negative, {0.0}},
+       {"wall_ratio", 0.01, and_non_finite({{-0.5, "-0.5"}, {0.5, "0.5"}, {1.5, "1.5"}}), {0.0}}},
+      [](const ValuesOf<T>& v) { return settling::KhanRichardsonExponent{parameter(v, 1)}.checked(v[0]); });
   check_entry_point<T>(
       "richardson_zaki_velocity",
       {{"terminal_velocity", 0.1, negative, {0.0}},
@@ -223,17 +225,19 @@ TEST_CASE_TEMPLATE("out of domain: terminal Reynolds numbers and terminal veloci
 TEST_CASE_TEMPLATE("out of domain: minimum fluidization", T, FLUIDBED_SCALAR_TYPES) {
   using namespace settling;
   const std::vector<ArgumentCase> bed{{"voidage", 0.4, outside_open_unit}, {"sphericity", 0.75, outside_voidage, {1.0}}};
-  check_entry_point<T>("ErgunMinimumFluidization::checked_reynolds",
-                       concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed), [](const ValuesOf<T>& v) {
-                         return fluidization::ErgunMinimumFluidization{v[1], v[2]}.checked_reynolds(v[0]);
-                       });
+  check_entry_point<T>(
+      "ErgunMinimumFluidization::checked_reynolds", concatenated({{"archimedes", 1e4, negative, {0.0}}}, bed),
+      [](const ValuesOf<T>& v) {
+        return fluidization::ErgunMinimumFluidization{parameter(v, 1), parameter(v, 2)}.checked_reynolds(v[0]);
+      });
   check_entry_point<T>(
       "WenYuMinimumFluidization::checked_reynolds", {{"archimedes", 1e4, negative, {0.0}}},
       [](const ValuesOf<T>& v) { return fluidization::WenYuMinimumFluidization{}.checked_reynolds(v[0]); });
-  check_entry_point<T>(
-      "ErgunMinimumFluidization::checked", concatenated(settling_system, bed), [](const ValuesOf<T>& v) {
-        return fluidization::ErgunMinimumFluidization{v[5], v[6]}.checked(fluid_of(v, 0), particles_of(v, 0), v[4]);
-      });
+  check_entry_point<T>("ErgunMinimumFluidization::checked", concatenated(settling_system, bed),
+                       [](const ValuesOf<T>& v) {
+                         return fluidization::ErgunMinimumFluidization{parameter(v, 5), parameter(v, 6)}.checked(
+                             fluid_of(v, 0), particles_of(v, 0), v[4]);
+                       });
   check_entry_point<T>("WenYuMinimumFluidization::checked", settling_system, [](const ValuesOf<T>& v) {
     return fluidization::WenYuMinimumFluidization{}.checked(fluid_of(v, 0), particles_of(v, 0), v[4]);
   });

@@ -59,11 +59,6 @@ template <class T>
 StrainRate<T> rate_of(const ValuesOf<T>& v, std::size_t at) {
   return {v[at], v[at + 1]};
 }
-// A law's parameter: a double member whatever the scalar type of the state.
-template <class T>
-double parameter(const ValuesOf<T>& v, std::size_t at) {
-  return double(v[at]);
-}
 template <class T>
 JohnsonJacksonPressure johnson_jackson_of(const ValuesOf<T>& v, std::size_t at) {
   return {parameter(v, at),     parameter(v, at + 1), parameter(v, at + 2),

@@ -23,7 +23,7 @@ TEST_CASE_TEMPLATE_INVOKE(scalar_types_settling, FLUIDBED_SCALAR_TYPES);
 // Re_t = 0.2 took the band below).
 TEST_CASE_TEMPLATE("Richardson-Zaki 1954: each band starts at its switch in the argument's type", T,
                    FLUIDBED_SCALAR_TYPES) {
-  const T wall = T(0);
+  const double wall = 0;
   CHECK(settling::RichardsonZaki1954Exponent{wall}(T(0.2L)) == T(4.35L) * std::pow(T(0.2L), T(-0.03L)));
   CHECK(settling::RichardsonZaki1954Exponent{wall}(std::nextafter(T(0.2L), T(0))) == T(4.65L));
   CHECK(settling::RichardsonZaki1954Exponent{wall}(T(1)) == T(4.45L));

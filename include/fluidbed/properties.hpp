@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/config.hpp"
+#include "core/constants.hpp"
 
 namespace fluidbed {
 
@@ -16,7 +17,7 @@ namespace fluidbed {
 // would carry only 53 bits into a long double evaluation).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T standard_gravity_as() {
-  return T(9.81L);
+  return FLUIDBED_DECIMAL(T, 9.81);
 }
 inline constexpr double standard_gravity = standard_gravity_as<double>();
 

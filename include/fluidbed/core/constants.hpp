@@ -6,6 +6,13 @@
 // double), so that a long double evaluation gets every digit of its type and a float one stays
 // in float. A Boost.Multiprecision number is given 64 digits, so that a 50-digit evaluation
 // gets a 50-digit π, not long double's.
+//
+// A closure's published decimal coefficient or switch point is written once, as
+// FLUIDBED_DECIMAL(T, 0.175): for a built-in T it is T(0.175L), the decimal rounded once to 64
+// bits and then to T, bit for bit what a long double literal gives; a Boost.Multiprecision T
+// parses the digits "0.175", so that a 50-digit evaluation gets the coefficient the paper
+// printed, not its 19-digit approximation. Dyadic decimals (0.5, 0.75) and integers are exact
+// in every type and are written plainly.
 #pragma once
 
 #include "config.hpp"
@@ -14,7 +21,8 @@ namespace fluidbed::numbers {
 
 namespace detail {
 
-// `digits` (64 significant digits) for a Boost.Multiprecision number (recognised by its
+// `digits` (64 significant digits for a constant of mathematics, the published digits for a
+// closure's coefficient) for a Boost.Multiprecision number (recognised by its
 // backend_type, without including Boost), else `rounded`. (Other wrappers, autodiff types
 // among them, may accept a string in overload resolution without parsing one.)
 template <class T>
@@ -58,3 +66,6 @@ FLUIDBED_HOST_DEVICE constexpr T ln10() {
 }
 
 }  // namespace fluidbed::numbers
+
+// The decimal `literal` (as written, without suffix) in T: see the header comment.
+#define FLUIDBED_DECIMAL(T, literal) (::fluidbed::numbers::detail::constant<T>(literal##L, #literal))

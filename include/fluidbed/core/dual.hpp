@@ -16,12 +16,14 @@
 #pragma once
 
 #include <cmath>
+#include <compare>
 #include <concepts>
 #include <numbers>
 #include <type_traits>
 #include <utility>
 
 #include "config.hpp"
+#include "constants.hpp"
 
 namespace fluidbed {
 
@@ -57,23 +59,28 @@ template <class S>
 using value_type_of = std::remove_cvref_t<decltype(value_of(std::declval<const S&>()))>;
 
 // Constants of the closures. A formula's constant meets its scalar in the scalar's plain
-// type T = value_type_of<S>, never in double: `1 - voidage`, `T(2.4L) * x`, `pow(x, T(0.75L))`.
-// A double literal would turn a float evaluation into a double one (float · double is
-// double) and round a long double evaluation's constants to 53 bits (double(0.175) is
-// 0.175 − 1.1e-17, 819 ulp of x87 long double). Exact integers are written as integers; every
-// other constant as a long double literal converted to T, so that it is the decimal rounded
-// once to T (to 64 bits, then to T: within half an ulp of T but for rare double-rounding
-// ties). A law's run-time parameters (an exponent, a packing limit) are double members and
-// enter as T(parameter): their precision is that of double in every T.
+// type T = value_type_of<S>, never in double: `1 - voidage`, `FLUIDBED_DECIMAL(T, 2.4) * x`,
+// `pow(x, T(0.75))`. A double literal would turn a float evaluation into a double one
+// (float · double is double) and round a long double evaluation's constants to 53 bits
+// (double(0.175) is 0.175 − 1.1e-17, 819 ulp of x87 long double). Exact integers and dyadic
+// decimals are written as such; every other decimal as FLUIDBED_DECIMAL(T, 0.175)
+// (core/constants.hpp): for a built-in T the long double literal 0.175L converted to T, the
+// decimal rounded once to T (to 64 bits, then to T: within half an ulp of T but for rare
+// double-rounding ties), and for a Boost.Multiprecision T the decimal parsed from its digits,
+// exact to the type's precision. A law's run-time parameters (an exponent, a packing limit, a
+// wall ratio, a sphericity) are double members and enter as T(parameter): their precision is
+// that of double in every T.
 //
 // A closure's constant that its argument is compared with (a switch point of a piecewise
 // law, a bound), in the plain type of S. Dual's comparisons convert a constant to T, while a
 // float compared with a double constant directly is compared in double: at ε = 0.85f,
 // 0.85f > 0.85 but 0.85f <= float(0.85), and the value (S = float) and the derivatives
-// (S = Dual<float, N>) would take different branches. Given as a long double literal and
-// rounded here once, both compare the same two numbers, and a long double argument is
-// compared with the decimal to 64 bits (0.8L < double(0.8): a double switch point would put
-// ε = 0.8L on the wrong side of a switch at ε = 0.8).
+// (S = Dual<float, N>) would take different branches. Rounded once to T, both compare the
+// same two numbers, and a long double argument is compared with the decimal to 64 bits
+// (0.8L < double(0.8): a double switch point would put ε = 0.8L on the wrong side of a switch
+// at ε = 0.8). A non-dyadic switch point is therefore FLUIDBED_DECIMAL(value_type_of<S>, 0.8)
+// (a law's named switch point: a static member function template returning it); constant_as
+// converts a dyadic or integer one given as a number.
 template <class S>
 FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(long double constant) {
   return value_type_of<S>(constant);
@@ -157,13 +164,33 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) { 
 template <class T, int N, ConstantFor<T> U>
 FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
 
+namespace detail {
+
+// a <=> b, also for a T without operator<=> (Boost.Multiprecision 1.74 has only < and ==).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr auto three_way(const T& a, const T& b) {
+  if constexpr (std::three_way_comparable<T>)
+    return a <=> b;
+  else
+    return a < b    ? std::partial_ordering::less
+           : b < a  ? std::partial_ordering::greater
+           : a == b ? std::partial_ordering::equivalent
+                    : std::partial_ordering::unordered;
+}
+
+}  // namespace detail
+
 // Comparisons look at the value only (branches of piecewise closures).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value <=> b.value; }
+FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<T, N>& b) {
+  return detail::three_way(a.value, b.value);
+}
 template <class T, int N>
 FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value == b.value; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, U c) { return a.value <=> T(c); }
+FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, U c) {
+  return detail::three_way(a.value, T(c));
+}
 template <class T, int N, ConstantFor<T> U>
 FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, U c) { return a.value == T(c); }
 

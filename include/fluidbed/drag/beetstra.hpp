@@ -55,8 +55,9 @@ struct Beetstra : DragLaw<Beetstra> {
     const S eps = 1 - phi;
     const S re_p = pow(re, S(T(0.5) + 2 * phi));
     const S inertial =
-        (re * (1 / eps + 3 * eps * phi) + T(8.4L) * pow(re, T(0.657L))) * (re_p / (re_p + pow(T(10), 3 * phi)));
-    return detail::van_der_hoef_stokes_force(phi) + T(0.413L) / 24 / (eps * eps) * inertial;
+        (re * (1 / eps + 3 * eps * phi) + FLUIDBED_DECIMAL(T, 8.4) * pow(re, FLUIDBED_DECIMAL(T, 0.657))) *
+        (re_p / (re_p + pow(T(10), 3 * phi)));
+    return detail::van_der_hoef_stokes_force(phi) + FLUIDBED_DECIMAL(T, 0.413) / 24 / (eps * eps) * inertial;
   }
 
   template <class S, class T>

@@ -46,9 +46,9 @@ struct DiFelice : DragLaw<DiFelice<Coefficient>> {
     using std::exp;
     using std::log;
     using T = value_type_of<S>;
-    if (!(re > S(0))) return S(T(3.7L));
+    if (!(re > S(0))) return S(FLUIDBED_DECIMAL(T, 3.7));
     const S x = T(1.5) - log(re) / numbers::ln10<T>();
-    return T(3.7L) - T(0.65L) * exp(T(-0.5) * x * x);
+    return FLUIDBED_DECIMAL(T, 3.7) - FLUIDBED_DECIMAL(T, 0.65) * exp(T(-0.5) * x * x);
   }
 
   template <class S, class T>

@@ -24,7 +24,10 @@ namespace fluidbed::drag {
 // (Wen–Yu at ε = 0.8 exactly). Use GidaspowBlended for a continuous law.
 struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr long double switch_voidage = 0.8L;
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T switch_voidage() {
+    return FLUIDBED_DECIMAL(T, 0.8);
+  }
 
   constexpr std::string_view name() const { return "GidaspowSwitched"; }
   constexpr std::string_view reference() const {
@@ -34,7 +37,7 @@ struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
-    if (voidage < constant_as<S>(switch_voidage)) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
+    if (voidage < switch_voidage<value_type_of<S>>()) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
     return pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
   }
 
@@ -56,7 +59,10 @@ struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
 // differs slightly from either law everywhere.
 struct GidaspowBlended : DragLaw<GidaspowBlended> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr long double centre_voidage = 0.8L;
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T centre_voidage() {
+    return FLUIDBED_DECIMAL(T, 0.8);
+  }
   static constexpr double steepness = 150.0 * 1.75;
 
   constexpr std::string_view name() const { return "GidaspowBlended"; }
@@ -69,7 +75,7 @@ struct GidaspowBlended : DragLaw<GidaspowBlended> {
   FLUIDBED_HOST_DEVICE static S blending_weight(const S& voidage) {
     using std::atan;
     using T = value_type_of<S>;
-    return T(0.5) + atan(T(steepness) * (voidage - constant_as<S>(centre_voidage))) / numbers::pi<T>();
+    return T(0.5) + atan(T(steepness) * (voidage - centre_voidage<T>())) / numbers::pi<T>();
   }
 
   template <class S, class T>

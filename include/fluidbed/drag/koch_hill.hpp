@@ -65,8 +65,16 @@ namespace fluidbed::drag {
 // to O(100)); Benyahia et al. extrapolate to all φ and Re.
 struct KochHill : DragLaw<KochHill> {
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr long double dilute_solid_fraction = 0.01L;  // φ ≤ this: dilute branch
-  static constexpr long double dense_solid_fraction = 0.4L;    // φ ≥ this: Carman form 10φ/ε³
+  // φ ≤ this: dilute branch
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T dilute_solid_fraction() {
+    return FLUIDBED_DECIMAL(T, 0.01);
+  }
+  // φ ≥ this: Carman form 10φ/ε³
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T dense_solid_fraction() {
+    return FLUIDBED_DECIMAL(T, 0.4);
+  }
 
   constexpr std::string_view name() const { return "KochHill"; }
   constexpr std::string_view reference() const {
@@ -80,7 +88,7 @@ struct KochHill : DragLaw<KochHill> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S f0(const S& phi) {
     using T = value_type_of<S>;
-    return blended_rational(phi, T(17.14L), T(-8.48L), T(8.16L));
+    return blended_rational(phi, FLUIDBED_DECIMAL(T, 17.14), FLUIDBED_DECIMAL(T, -8.48), FLUIDBED_DECIMAL(T, 8.16));
   }
 
   // F1(φ): coefficient of Re_h² of the low-Re branch (defined for φ > 0).
@@ -89,24 +97,25 @@ struct KochHill : DragLaw<KochHill> {
     using std::exp;
     using std::sqrt;
     using T = value_type_of<S>;
-    if (phi <= constant_as<S>(0.1L)) return sqrt(2 / phi) / 40;
-    return T(0.11L) + T(5.1e-4L) * exp(T(11.6L) * phi);
+    if (phi <= FLUIDBED_DECIMAL(T, 0.1)) return sqrt(2 / phi) / 40;
+    return FLUIDBED_DECIMAL(T, 0.11) + FLUIDBED_DECIMAL(T, 5.1e-4) * exp(FLUIDBED_DECIMAL(T, 11.6) * phi);
   }
 
   // F2(φ): zero-Re intercept of the high-Re linear branch (defined for φ >= 0).
   template <class S>
   FLUIDBED_HOST_DEVICE static S f2(const S& phi) {
     using T = value_type_of<S>;
-    return blended_rational(phi, T(17.89L), T(-11.03L), T(15.41L));
+    return blended_rational(phi, FLUIDBED_DECIMAL(T, 17.89), FLUIDBED_DECIMAL(T, -11.03), FLUIDBED_DECIMAL(T, 15.41));
   }
 
   // F3(φ): slope in Re_h of the high-Re linear branch.
   template <class S>
   FLUIDBED_HOST_DEVICE static S f3(const S& phi) {
     using T = value_type_of<S>;
-    if (phi < constant_as<S>(0.0953L)) return T(0.9351L) * phi + T(0.03667L);
+    if (phi < FLUIDBED_DECIMAL(T, 0.0953)) return FLUIDBED_DECIMAL(T, 0.9351) * phi + FLUIDBED_DECIMAL(T, 0.03667);
     const S eps = 1 - phi;
-    return T(0.0673L) + T(0.212L) * phi + T(0.0232L) / ((eps * eps) * (eps * eps) * eps);
+    return FLUIDBED_DECIMAL(T, 0.0673) + FLUIDBED_DECIMAL(T, 0.212) * phi +
+           FLUIDBED_DECIMAL(T, 0.0232) / ((eps * eps) * (eps * eps) * eps);
   }
 
   // Re_h where the branches meet: Re_T (φ > 0.01) or Re_T1 (φ ≤ 0.01).
@@ -114,7 +123,7 @@ struct KochHill : DragLaw<KochHill> {
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
     using std::sqrt;
     using T = value_type_of<S>;
-    if (phi <= constant_as<S>(dilute_solid_fraction)) return (f2(phi) - 1) / (T(0.375) - f3(phi));
+    if (phi <= dilute_solid_fraction<T>()) return (f2(phi) - 1) / (T(0.375) - f3(phi));
     const S a = f1(phi);
     const S b = f3(phi);
     return (b + sqrt(b * b - 4 * a * (f0(phi) - f2(phi)))) / (2 * a);
@@ -126,7 +135,7 @@ struct KochHill : DragLaw<KochHill> {
     using T = value_type_of<S>;
     const S re_h = T(0.5) * re;
     if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= constant_as<S>(dilute_solid_fraction)) return 1 + T(0.375) * re_h;
+    if (phi <= dilute_solid_fraction<T>()) return 1 + T(0.375) * re_h;
     return f0(phi) + f1(phi) * (re_h * re_h);
   }
 
@@ -148,11 +157,11 @@ struct KochHill : DragLaw<KochHill> {
     using T = value_type_of<S>;
     const S eps = 1 - phi;
     const S carman = 10 * phi / (eps * eps * eps);
-    if (phi >= constant_as<S>(dense_solid_fraction)) return carman;
+    if (phi >= dense_solid_fraction<T>()) return carman;
     if (!(phi > 0)) return S(1);
-    const S weight = exp(-10 * (constant_as<S>(dense_solid_fraction) - phi) / phi);
+    const S weight = exp(-10 * (dense_solid_fraction<T>() - phi) / phi);
     const S rational = (1 + 3 * sqrt(T(0.5) * phi) + T(135) / 64 * phi * log(phi) + a * phi) /
-                       (1 + phi * (T(0.681L) + phi * (b + c * phi)));
+                       (1 + phi * (FLUIDBED_DECIMAL(T, 0.681) + phi * (b + c * phi)));
     return (1 - weight) * rational + weight * carman;
   }
 };

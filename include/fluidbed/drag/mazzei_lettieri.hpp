@@ -57,7 +57,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::exp;
     using std::pow;
     const T re_value = value_of(re);
-    if (!(re_value > T(0))) return re * pow(voidage, T(-4.8L));  // Re* = Re ε^−4.8 as Re → 0
+    if (!(re_value > T(0))) return re * pow(voidage, FLUIDBED_DECIMAL(T, -4.8));  // Re* = Re ε^−4.8 as Re → 0
     // The relation's solve itself rather than settling::richardson_zaki_terminal_reynolds, which
     // asserts a finite Re: inside this law's domain Re = ρ_f ε w d/μ_f may overflow to +∞, where
     // the law's contract is a non-finite β for `checked` to report, not an assertion.
@@ -86,7 +86,8 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::sqrt;
     using T = value_type_of<S>;
     const S re_star = effective_reynolds(voidage, re);
-    const S ratio = (T(0.63L) * sqrt(re_star) + T(4.8L)) / (T(0.63L) * sqrt(re) + T(4.8L));
+    const S ratio = (FLUIDBED_DECIMAL(T, 0.63) * sqrt(re_star) + FLUIDBED_DECIMAL(T, 4.8)) /
+                    (FLUIDBED_DECIMAL(T, 0.63) * sqrt(re) + FLUIDBED_DECIMAL(T, 4.8));
     return ratio * ratio * pow(voidage, 2 - settling::MazzeiExponent{}.exponent(re_star));
   }
 
@@ -99,7 +100,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::sqrt;
     if (voidage == S(1)) {
       using T = value_type_of<S>;
-      const S d = T(4.8L) / (T(0.63L) * sqrt(re) + T(4.8L));
+      const S d = FLUIDBED_DECIMAL(T, 4.8) / (FLUIDBED_DECIMAL(T, 0.63) * sqrt(re) + FLUIDBED_DECIMAL(T, 4.8));
       return settling::MazzeiExponent{}(re) * (2 - d) - 2;
     }
     return -log(voidage_function(voidage, re)) / log(voidage);
@@ -140,12 +141,13 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     using std::log1p;
     const T prefactor = T(0.75) * fluid.viscosity / (diameter * diameter);
     const T e = state.inverse_root_power;
-    const T root = (T(0.63L) * state.root_reynolds * e + T(4.8L)) * e;
+    const T root = (FLUIDBED_DECIMAL(T, 0.63) * state.root_reynolds * e + FLUIDBED_DECIMAL(T, 4.8)) * e;
     const T beta = prefactor * (T(1) - voidage) * voidage * root * root;
     if (isfinite(beta)) return beta;
     const T log_e = T(-0.5) * state.exponent * state.log_voidage;  // (0.63 √Re E² + 4.8 E)² = E⁴ (0.63 √Re + 4.8/E)²
     return exp(log(T(0.75)) + log(fluid.viscosity) - T(2) * log(diameter) + log1p(-voidage) + state.log_voidage +
-               T(4) * log_e + T(2) * log(T(0.63L) * state.root_reynolds + T(4.8L) / e));
+               T(4) * log_e +
+               T(2) * log(FLUIDBED_DECIMAL(T, 0.63) * state.root_reynolds + FLUIDBED_DECIMAL(T, 4.8) / e));
   }
 
   template <class S, class T>
@@ -162,7 +164,7 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     const S re_star = effective_reynolds(voidage, re);
     // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
-    const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(T(4.8L));
+    const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(FLUIDBED_DECIMAL(T, 4.8));
     S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
              pow(voidage, 1 - exponent);
     if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit

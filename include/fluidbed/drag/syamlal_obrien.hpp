@@ -47,13 +47,16 @@ namespace fluidbed::drag {
 class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
  public:
   static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
-  static constexpr long double switch_voidage = 0.85L;
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T switch_voidage() {
+    return FLUIDBED_DECIMAL(T, 0.85);
+  }
 
   constexpr explicit SyamlalOBrien(double c1 = 0.8, double d1 = 2.65) : c1_(c1), d1_(d1) {}
 
   // d1 given, c1 = 0.85^(d1 − 1.28): B continuous at ε = 0.85.
   static SyamlalOBrien continuous_at_switch(double d1) {
-    return SyamlalOBrien(std::pow(double(switch_voidage), d1 - 1.28), d1);
+    return SyamlalOBrien(std::pow(switch_voidage<double>(), d1 - 1.28), d1);
   }
 
   constexpr double c1() const { return c1_; }
@@ -71,10 +74,10 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
     using std::pow;
     using std::sqrt;
     using T = value_type_of<S>;
-    const S a = pow(voidage, T(4.14L));
+    const S a = pow(voidage, FLUIDBED_DECIMAL(T, 4.14));
     const S b =
-        voidage <= constant_as<S>(switch_voidage) ? S(T(c1_) * pow(voidage, T(1.28L))) : S(pow(voidage, T(d1_)));
-    const S x = T(0.06L) * re_s;
+        voidage <= switch_voidage<T>() ? S(T(c1_) * pow(voidage, FLUIDBED_DECIMAL(T, 1.28))) : S(pow(voidage, T(d1_)));
+    const S x = FLUIDBED_DECIMAL(T, 0.06) * re_s;
     const S difference = a - x;
     const S root = sqrt(difference * difference + 4 * b * x);
     if (difference >= 0) return T(0.5) * (difference + root);

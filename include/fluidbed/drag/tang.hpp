@@ -53,11 +53,12 @@ struct Tang : DragLaw<Tang> {
     using T = value_type_of<S>;
     const S eps = 1 - phi;
     const S eps4 = (eps * eps) * (eps * eps);
-    const S linear = T(0.11L) * phi * (1 + phi) - T(0.00456L) / eps4;
-    const S power = T(0.169L) * eps + T(0.0644L) / eps4;
+    const S linear = FLUIDBED_DECIMAL(T, 0.11) * phi * (1 + phi) - FLUIDBED_DECIMAL(T, 0.00456) / eps4;
+    const S power = FLUIDBED_DECIMAL(T, 0.169) * eps + FLUIDBED_DECIMAL(T, 0.0644) / eps4;
     const S stokes = detail::van_der_hoef_stokes_force(phi);
-    if (re <= constant_as<S>(fitted_reynolds_max)) return stokes + linear * re + power * pow(re, T(0.657L));
-    return stokes + (linear + power * pow(T(fitted_reynolds_max), T(0.657L) - 1)) * re;
+    if (re <= constant_as<S>(fitted_reynolds_max))
+      return stokes + linear * re + power * pow(re, FLUIDBED_DECIMAL(T, 0.657));
+    return stokes + (linear + power * pow(T(fitted_reynolds_max), FLUIDBED_DECIMAL(T, 0.657) - 1)) * re;
   }
 
   template <class S, class T>

@@ -57,9 +57,10 @@ struct Tenneti : DragLaw<Tenneti> {
     const S eps = 1 - phi;
     const S eps3 = eps * eps * eps;
     const S phi3 = phi * phi * phi;
-    const S isolated = 1 + T(0.15L) * pow(re, T(0.687L));
-    const S volume_fraction = T(5.81L) * phi / eps3 + T(0.48L) * pow(phi, T(1) / 3) / (eps3 * eps);
-    const S inertial = phi3 * re * (T(0.95L) + T(0.61L) * phi3 / (eps * eps));
+    const S isolated = 1 + FLUIDBED_DECIMAL(T, 0.15) * pow(re, FLUIDBED_DECIMAL(T, 0.687));
+    const S volume_fraction =
+        FLUIDBED_DECIMAL(T, 5.81) * phi / eps3 + FLUIDBED_DECIMAL(T, 0.48) * pow(phi, T(1) / 3) / (eps3 * eps);
+    const S inertial = phi3 * re * (FLUIDBED_DECIMAL(T, 0.95) + FLUIDBED_DECIMAL(T, 0.61) * phi3 / (eps * eps));
     return isolated / eps3 + volume_fraction + inertial;
   }
 

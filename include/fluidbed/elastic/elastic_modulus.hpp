@@ -113,9 +113,10 @@ FLUIDBED_HOST_DEVICE MazzeiLettieriFunctions<S> table_3_1_functions(const S& voi
   const S one_plus_x = 1 + scaled_power;
   MazzeiLettieriFunctions<S> f;
   f.exponent = settling::MazzeiExponent::of_scaled_power(scaled_power);
-  f.exponent_slope = T(-1.8L) * scaled_power / (one_plus_x * one_plus_x);  // Re* N, divided by Re* by the caller
+  f.exponent_slope =
+      FLUIDBED_DECIMAL(T, -1.8) * scaled_power / (one_plus_x * one_plus_x);  // Re* N, divided by Re* by the caller
   f.reynolds_factor = 1 / (1 + f.exponent_slope * log_voidage);
-  f.drag_factor = T(4.8L) / (T(0.63L) * root_re_star + T(4.8L));
+  f.drag_factor = FLUIDBED_DECIMAL(T, 4.8) / (FLUIDBED_DECIMAL(T, 0.63) * root_re_star + FLUIDBED_DECIMAL(T, 4.8));
   f.voidage_sensitivity = f.reynolds_factor * f.exponent * (f.drag_factor - 2) / voidage;
   return f;
 }
@@ -216,7 +217,7 @@ FLUIDBED_HOST_DEVICE S modulus_from_sensitivity(const S& voidage, const S& sensi
 // H (eq. 4.38).
 template <class S>
 FLUIDBED_HOST_DEVICE constexpr S constant_exponent_sensitivity(const S& voidage) {
-  return value_type_of<S>(-4.8L) / voidage;
+  return FLUIDBED_DECIMAL(value_type_of<S>, -4.8) / voidage;
 }
 
 // "state {name = value, …}", for the messages of the checked entry points.
@@ -341,7 +342,7 @@ struct FoscoloGibilaroModulus : ElasticModulus<FoscoloGibilaroModulus> {
   }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S modulus_at_equilibrium(const S& voidage, const EquilibriumState<T>& s) const {
-    return detail::modulus_from_sensitivity(voidage, S(T(-4.8L)), s.fluid, s.particles, s.gravity);
+    return detail::modulus_from_sensitivity(voidage, S(FLUIDBED_DECIMAL(T, -4.8)), s.fluid, s.particles, s.gravity);
   }
 };
 

@@ -242,7 +242,7 @@ T squared_wavenumber_of_wave_velocity(const WaveSpeeds<T>& w, const T& velocity,
 // search resolves in T (detail::largest_searched_voidage).
 template <class T>
 struct VoidageInterval {
-  T lower = T(0.3L);
+  T lower = FLUIDBED_DECIMAL(T, 0.3);
   T upper = T(1);
 };
 

@@ -36,14 +36,14 @@ namespace fluidbed::fluidization {
 // (1 − ε_mf)(ρ_p − ρ_f) g; for φ_s = 1 it is the equilibrium, eq. 3.28, of seed 000's Ergun
 // drag, eq. 3.32, which gives the u_mf = 8.73·10⁻³ m s⁻¹ of its §4.3.3). A quadratic a Re² + b Re = Ar, solved in the
 // cancellation-free form Re_mf = 2 Ar / (b + √(b² + 4 a Ar)).
-// Parameters: ε_mf ∈ (0, 1) (default 0.4, seed 000 §4.3.3), φ_s ∈ (0, 1] (default 1), held
-// as long double so that a float, double or long double value is held exactly.
+// Parameters: ε_mf ∈ (0, 1) (default 0.4, seed 000 §4.3.3), φ_s ∈ (0, 1] (default 1), doubles
+// like every law's parameters.
 // Validity: Ergun's, all Re_mf; ε_mf and φ_s as measured for the bed.
 struct ErgunMinimumFluidization : single_particle::ArchimedesCorrelation<ErgunMinimumFluidization> {
-  long double voidage;     // ε_mf
-  long double sphericity;  // φ_s
+  double voidage;     // ε_mf
+  double sphericity;  // φ_s
 
-  constexpr explicit ErgunMinimumFluidization(long double voidage = 0.4L, long double sphericity = 1)
+  constexpr explicit ErgunMinimumFluidization(double voidage = 0.4, double sphericity = 1)
       : voidage(voidage), sphericity(sphericity) {}
 
   constexpr std::string_view name() const { return "ErgunMinimumFluidization"; }
@@ -91,8 +91,8 @@ struct WenYuMinimumFluidization : single_particle::ArchimedesCorrelation<WenYuMi
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
     using std::sqrt;
     using T = value_type_of<S>;
-    const T c = T(33.7L);
-    const S k = T(0.0408L) * archimedes;
+    const T c = FLUIDBED_DECIMAL(T, 33.7);
+    const S k = FLUIDBED_DECIMAL(T, 0.0408) * archimedes;
     return k / (sqrt(c * c + k) + c);
   }
 };

@@ -47,15 +47,17 @@ drag::SyamlalOBrien syamlal_obrien_from_minimum_fluidization(const T& velocity, 
                         [&] { return describe(single_particle::settling_domain(fluid, particles, gravity)); });
   const T re_terminal = single_particle::DallavalleTerminalVelocity{}.reynolds(archimedes_number);
   const T ratio = fluid.density * (velocity / voidage) * particles.diameter / fluid.viscosity / re_terminal;
-  const T b = (ratio * (1 + T(0.06L) * re_terminal) - pow(voidage, T(4.14L))) / (T(0.06L) * re_terminal);
+  const T b = (ratio * (1 + FLUIDBED_DECIMAL(T, 0.06) * re_terminal) - pow(voidage, FLUIDBED_DECIMAL(T, 4.14))) /
+              (FLUIDBED_DECIMAL(T, 0.06) * re_terminal);
   if (!(b > T(0)))
     fluidbed::detail::throw_domain_error(function, "minimum_fluidization_velocity", velocity,
                                          "too small for this law: it implies B <= 0");
-  const T switch_voidage = T(SyamlalOBrien::switch_voidage);
+  const T switch_voidage = SyamlalOBrien::switch_voidage<T>();
   const SyamlalOBrien law = [&] {
     if (voidage <= switch_voidage) {
-      const T c1 = b / pow(voidage, T(1.28L));
-      return SyamlalOBrien(static_cast<double>(c1), static_cast<double>(T(1.28L) + log(c1) / log(switch_voidage)));
+      const T c1 = b / pow(voidage, FLUIDBED_DECIMAL(T, 1.28));
+      return SyamlalOBrien(static_cast<double>(c1),
+                           static_cast<double>(FLUIDBED_DECIMAL(T, 1.28) + log(c1) / log(switch_voidage)));
     }
     return SyamlalOBrien::continuous_at_switch(static_cast<double>(log(b) / log(voidage)));
   }();

@@ -38,7 +38,7 @@ struct GidaspowConductivity : WithGidaspowCollisionalConductivity<GidaspowConduc
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     const T one_plus_e = 1 + m.restitution;
-    const S bracket = 1 + (T(1.2L) * one_plus_e) * phi * g0;
+    const S bracket = 1 + (FLUIDBED_DECIMAL(T, 1.2) * one_plus_e) * phi * g0;
     return (T(150) / 384 * numbers::sqrt_pi<T>() * m.density * m.diameter / one_plus_e) * sqrt(theta) * bracket *
            bracket / g0;
   }
@@ -56,7 +56,7 @@ struct SyamlalConductivity : WithGidaspowCollisionalConductivity<SyamlalConducti
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     const T eta = T(0.5) * (1 + m.restitution);
-    const S bracket = 1 + (T(2.4L) * eta * eta * (4 * eta - 3)) * phi * g0;
+    const S bracket = 1 + (FLUIDBED_DECIMAL(T, 2.4) * eta * eta * (4 * eta - 3)) * phi * g0;
     return (15 * numbers::sqrt_pi<T>() * m.density * m.diameter / (4 * (41 - 33 * eta))) * phi * sqrt(theta) * bracket;
   }
 };

@@ -283,7 +283,7 @@ struct SrivastavaSundaresan : KineticTheoryLaw<SrivastavaSundaresan> {
     const S critical = critical_state_pressure.kernel(phi);
     const T sin_angle = sin(T(friction_angle)), floor = T(strain_rate_floor), sqrt2 = numbers::sqrt2<T>();
     const S zeta = sqrt(rate.deviatoric_contraction + theta / (diameter * diameter) + floor * floor);
-    const T n = rate.divergence >= 0 ? numbers::sqrt3<T>() / (2 * sin_angle) : T(1.03L);
+    const T n = rate.divergence >= 0 ? numbers::sqrt3<T>() / (2 * sin_angle) : FLUIDBED_DECIMAL(T, 1.03);
     // u = 1 − r: written in u, ∂μ_f/∂(∇·u) is exactly 0 at ∇·u = 0, as it is analytically.
     const S u = rate.divergence / ((n * sqrt2 * sin_angle) * zeta);
     if (u >= 1) return {S(0), S(0)};

@@ -175,24 +175,27 @@ struct GidaspowRadialDistribution : detail::CubeRootContact<GidaspowRadialDistri
 // denominator factor is continued linearly above 0.64356 − packing_margin. Validity: fitted
 // to hard-sphere data up to its packing limit 0.64356.
 struct MaAhmadi : SolidFractionLaw<MaAhmadi> {
-  static constexpr long double max_packing = 0.64356L;
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T max_packing() {
+    return FLUIDBED_DECIMAL(T, 0.64356);
+  }
   double packing_margin = default_packing_margin;
 
   constexpr explicit MaAhmadi(double packing_margin_ = default_packing_margin) : packing_margin(packing_margin_) {}
   constexpr std::string_view name() const { return "MaAhmadi"; }
   constexpr std::string_view reference() const { return "Ma, D. & Ahmadi, G. (1986) J. Chem. Phys. 84, 3449-3450"; }
-  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, double(max_packing)}}}; }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing<double>()}}}; }
   constexpr Arguments<double, 2> parameter_domain() const {
-    return detail::packing_domain(double(max_packing), packing_margin);
+    return detail::packing_domain(max_packing<double>(), packing_margin);
   }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
     using T = value_type_of<S>;
-    const S polynomial = 1 + phi * (T(2.5) + phi * (T(4.5904L) + phi * T(4.515439L)));
-    const S packing = detail::continued_linearly_above(phi, T(max_packing) - T(packing_margin), [](const auto& x) {
-      const auto r = x / T(max_packing);
-      return pow(1 - r * r * r, T(-0.67802L));
+    const S polynomial = 1 + phi * (T(2.5) + phi * (FLUIDBED_DECIMAL(T, 4.5904) + phi * FLUIDBED_DECIMAL(T, 4.515439)));
+    const S packing = detail::continued_linearly_above(phi, max_packing<T>() - T(packing_margin), [](const auto& x) {
+      const auto r = x / max_packing<T>();
+      return pow(1 - r * r * r, FLUIDBED_DECIMAL(T, -0.67802));
     });
     return polynomial * packing;
   }

@@ -65,7 +65,7 @@ struct GidaspowViscosity : WithGidaspowCollisionalViscosity<GidaspowViscosity> {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     const T one_plus_e = 1 + m.restitution;
-    const S bracket = 1 + (T(0.8L) * one_plus_e) * g0 * phi;
+    const S bracket = 1 + (FLUIDBED_DECIMAL(T, 0.8) * one_plus_e) * g0 * phi;
     return 2 * detail::dilute_viscosity(theta, m) * bracket * bracket / (one_plus_e * g0);
   }
 };
@@ -82,7 +82,7 @@ struct SyamlalViscosity : WithGidaspowCollisionalViscosity<SyamlalViscosity> {
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;
     const T e = m.restitution;
-    const S bracket = 1 + (T(0.4L) * (1 + e) * (3 * e - 1)) * phi * g0;
+    const S bracket = 1 + (FLUIDBED_DECIMAL(T, 0.4) * (1 + e) * (3 * e - 1)) * phi * g0;
     return (numbers::sqrt_pi<T>() * m.density * m.diameter / (6 * (3 - e))) * phi * sqrt(theta) * bracket;
   }
 };

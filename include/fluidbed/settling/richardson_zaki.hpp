@@ -125,7 +125,7 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
   FLUIDBED_HOST_DEVICE static S scaled_power(const S& terminal_reynolds) {
     using std::pow;
     using T = value_type_of<S>;
-    return T(0.175L) * pow(terminal_reynolds, T(0.75));
+    return FLUIDBED_DECIMAL(T, 0.175) * pow(terminal_reynolds, T(0.75));
   }
 
   // Eq. 3.24 written in y = 0.175 Re_t^¾ (what a caller that has y already needs: the
@@ -133,7 +133,7 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
   template <class S>
   FLUIDBED_HOST_DEVICE static S of_scaled_power(const S& y) {
     using T = value_type_of<S>;
-    return T(2.4L) + T(2.4L) / (1 + y);
+    return FLUIDBED_DECIMAL(T, 2.4) + FLUIDBED_DECIMAL(T, 2.4) / (1 + y);
   }
 
   // The kernel, without the hot path's assertion: also defined at Re_t = +∞ (n = 2.4), for the
@@ -151,7 +151,7 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
     using std::pow;
     using T = value_type_of<S>;
     const S one_plus_x = 1 + scaled_power(terminal_reynolds);
-    return T(-0.315L) * pow(terminal_reynolds, T(-0.25)) / (one_plus_x * one_plus_x);
+    return FLUIDBED_DECIMAL(T, -0.315) * pow(terminal_reynolds, T(-0.25)) / (one_plus_x * one_plus_x);
   }
 };
 
@@ -171,9 +171,9 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
 // Parameter: d/D ∈ [0, 1) (default 0).
 struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exponent> {
   static constexpr std::string_view argument = "terminal_reynolds";
-  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+  double wall_ratio;  // d/D
 
-  constexpr explicit RichardsonZaki1954Exponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+  constexpr explicit RichardsonZaki1954Exponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
 
   constexpr std::string_view name() const { return "RichardsonZaki1954Exponent"; }
   constexpr std::string_view reference() const {
@@ -194,11 +194,13 @@ struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exp
     using std::pow;
     using T = value_type_of<S>;
     const T d_over_D = T(wall_ratio);
-    if (terminal_reynolds < constant_as<S>(0.2L)) return S(T(4.65L) + T(19.5) * d_over_D);
-    if (terminal_reynolds < 1) return (T(4.35L) + T(17.5) * d_over_D) * pow(terminal_reynolds, T(-0.03L));
-    if (terminal_reynolds < 200) return (T(4.45L) + 18 * d_over_D) * pow(terminal_reynolds, T(-0.1L));
-    if (terminal_reynolds < 500) return T(4.45L) * pow(terminal_reynolds, T(-0.1L));
-    return S(T(2.39L));
+    if (terminal_reynolds < FLUIDBED_DECIMAL(T, 0.2)) return S(FLUIDBED_DECIMAL(T, 4.65) + T(19.5) * d_over_D);
+    if (terminal_reynolds < 1)
+      return (FLUIDBED_DECIMAL(T, 4.35) + T(17.5) * d_over_D) * pow(terminal_reynolds, FLUIDBED_DECIMAL(T, -0.03));
+    if (terminal_reynolds < 200)
+      return (FLUIDBED_DECIMAL(T, 4.45) + 18 * d_over_D) * pow(terminal_reynolds, FLUIDBED_DECIMAL(T, -0.1));
+    if (terminal_reynolds < 500) return FLUIDBED_DECIMAL(T, 4.45) * pow(terminal_reynolds, FLUIDBED_DECIMAL(T, -0.1));
+    return S(FLUIDBED_DECIMAL(T, 2.39));
   }
 };
 
@@ -222,7 +224,7 @@ struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
     using std::pow;
     using T = value_type_of<S>;
     const S x = pow(terminal_reynolds, T(0.75));
-    return (T(4.7L) + T(0.41L) * x) / (1 + T(0.175L) * x);
+    return (FLUIDBED_DECIMAL(T, 4.7) + FLUIDBED_DECIMAL(T, 0.41) * x) / (1 + FLUIDBED_DECIMAL(T, 0.175) * x);
   }
 };
 
@@ -239,9 +241,9 @@ struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
 // data, and such d/D are out of domain. Parameter: d/D ∈ [0, 0.0391) (default 0).
 struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
   static constexpr std::string_view argument = "archimedes";
-  long double wall_ratio;  // d/D; long double so that a float, double or long double d/D is held exactly
+  double wall_ratio;  // d/D
 
-  constexpr explicit KhanRichardsonExponent(long double wall_ratio = 0) : wall_ratio(wall_ratio) {}
+  constexpr explicit KhanRichardsonExponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
 
   constexpr std::string_view name() const { return "KhanRichardsonExponent"; }
   constexpr std::string_view reference() const {
@@ -255,14 +257,14 @@ struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
   template <class T>
   FLUIDBED_HOST_DEVICE T wall_factor() const {
     using std::pow;
-    return 1 - T(2.4L) * pow(T(wall_ratio), T(0.27L));
+    return 1 - FLUIDBED_DECIMAL(T, 2.4) * pow(T(wall_ratio), FLUIDBED_DECIMAL(T, 0.27));
   }
 
   // d/D >= 0 with a positive wall factor, i.e. d/D < (1/2.4)^(1/0.27).
   template <class T>
   FLUIDBED_HOST_DEVICE Arguments<T, 1> parameter_domain() const {
     using std::pow;
-    const T largest = pow(1 / T(2.4L), 1 / T(0.27L));
+    const T largest = pow(1 / FLUIDBED_DECIMAL(T, 2.4), 1 / FLUIDBED_DECIMAL(T, 0.27));
     return {{{"wall_ratio", T(wall_ratio), domains::closed_open(T(0), largest),
               "must be >= 0 and < (1/2.4)^(1/0.27) = 0.0391, where 1 - 2.4 (d/D)^0.27 > 0"}}};
   }
@@ -271,7 +273,9 @@ struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
   FLUIDBED_HOST_DEVICE S exponent(const S& archimedes) const {
     using std::pow;
     using T = value_type_of<S>;
-    return T(2.4L) + T(2.4L) / (1 + T(0.043L) * pow(archimedes, T(0.57L)) * wall_factor<T>());
+    return FLUIDBED_DECIMAL(T, 2.4) +
+           FLUIDBED_DECIMAL(T, 2.4) /
+               (1 + FLUIDBED_DECIMAL(T, 0.043) * pow(archimedes, FLUIDBED_DECIMAL(T, 0.57)) * wall_factor<T>());
   }
 };
 
@@ -297,7 +301,8 @@ struct GarsideAlDibouniExponent : RichardsonZakiExponent<GarsideAlDibouniExponen
   FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
     using std::pow;
     using T = value_type_of<S>;
-    return T(2.7L) + T(2.4L) / (1 + T(0.1L) * pow(terminal_reynolds, T(0.9L)));
+    return FLUIDBED_DECIMAL(T, 2.7) +
+           FLUIDBED_DECIMAL(T, 2.4) / (1 + FLUIDBED_DECIMAL(T, 0.1) * pow(terminal_reynolds, FLUIDBED_DECIMAL(T, 0.9)));
   }
 };
 
@@ -383,18 +388,18 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
   const T stop = T(4) * cbrt(std::numeric_limits<T>::epsilon());
   // The bracket, widened by 1 so that a root at one of its ends (n = 4.8 or 2.4 to rounding)
   // lies strictly inside it: a step that lands on an end is then one that cycles.
-  T low = log_re - T(2.4L) * log_voidage - 1;
-  T high = log_re - T(4.8L) * log_voidage + 1;
-  T x = log_re - T(3.6L) * log_voidage;
+  T low = log_re - FLUIDBED_DECIMAL(T, 2.4) * log_voidage - 1;
+  T high = log_re - FLUIDBED_DECIMAL(T, 4.8) * log_voidage + 1;
+  T x = log_re - FLUIDBED_DECIMAL(T, 3.6) * log_voidage;
   T previous = high - low;  // the size of the last step taken
   T y{};
   for (int iteration = 0; iteration < 100; ++iteration) {
-    y = T(0.175L) * exp(T(0.75) * x);
+    y = FLUIDBED_DECIMAL(T, 0.175) * exp(T(0.75) * x);
     const T r = T(1) / (T(1) + y);
     const T r_q = r * (T(1) - r);  // y r² = y/(1 + y)², from r so that y = ∞ gives 0
-    const T g = x + T(2.4L) * log_voidage - log_re + T(2.4L) * log_voidage * r;
-    const T d1 = T(1) - T(1.8L) * log_voidage * r_q;
-    const T d2 = T(-1.35L) * log_voidage * r_q * (T(2) * r - T(1));
+    const T g = x + FLUIDBED_DECIMAL(T, 2.4) * log_voidage - log_re + FLUIDBED_DECIMAL(T, 2.4) * log_voidage * r;
+    const T d1 = T(1) - FLUIDBED_DECIMAL(T, 1.8) * log_voidage * r_q;
+    const T d2 = FLUIDBED_DECIMAL(T, -1.35) * log_voidage * r_q * (T(2) * r - T(1));
     const T step = T(2) * g * d1 / (T(2) * d1 * d1 - g * d2);
     if (abs(step) <= stop) {
       x -= step;

@@ -110,8 +110,9 @@ struct SchillerNaumannCoefficient : SphereDragCoefficient<SchillerNaumannCoeffic
   FLUIDBED_HOST_DEVICE static S cd_times_re(const S& re) {
     using std::pow;
     using T = value_type_of<S>;
-    if (re < constant_as<S>(newton_switch_reynolds)) return 24 * (1 + T(0.15L) * pow(re, T(0.687L)));
-    return T(0.44L) * re;
+    if (re < constant_as<S>(newton_switch_reynolds))
+      return 24 * (1 + FLUIDBED_DECIMAL(T, 0.15) * pow(re, FLUIDBED_DECIMAL(T, 0.687)));
+    return FLUIDBED_DECIMAL(T, 0.44) * re;
   }
 };
 
@@ -129,7 +130,7 @@ struct DallavalleCoefficient : SphereDragCoefficient<DallavalleCoefficient> {
   FLUIDBED_HOST_DEVICE static S cd_times_re(const S& re) {
     using std::sqrt;
     using T = value_type_of<S>;
-    const S root = T(0.63L) * sqrt(re) + T(4.8L);
+    const S root = FLUIDBED_DECIMAL(T, 0.63) * sqrt(re) + FLUIDBED_DECIMAL(T, 4.8);
     return root * root;
   }
 };

@@ -29,12 +29,12 @@ namespace fluidbed::single_particle {
 // equal volume and φ_s the sphericity. Limits: Re_t → Ar/18 as Ar → 0 (Stokes, exactly) and
 // Re_t → √Ar/c as Ar → ∞, i.e. C_D = 4 Ar/(3 Re_t²) → 4c²/3 = 0.4655 for a sphere (the Newton
 // form's 0.44 is 6 % lower). Smooth for every Ar ≥ 0; dRe_t/dAr = 1/18 at Ar = 0.
-// Parameter: φ_s ∈ [0.5, 1] (default 1, a sphere), held as long double. Validity: the fit's
-// sphericities 0.5–1 and the drag data below the drag crisis, Re_t ≲ 2.6·10⁵.
+// Parameter: φ_s ∈ [0.5, 1] (default 1, a sphere), a double like every law's parameter.
+// Validity: the fit's sphericities 0.5–1 and the drag data below the drag crisis, Re_t ≲ 2.6·10⁵.
 struct HaiderLevenspielTerminalVelocity : ArchimedesCorrelation<HaiderLevenspielTerminalVelocity> {
-  long double sphericity;  // φ_s
+  double sphericity;  // φ_s
 
-  constexpr explicit HaiderLevenspielTerminalVelocity(long double sphericity = 1) : sphericity(sphericity) {}
+  constexpr explicit HaiderLevenspielTerminalVelocity(double sphericity = 1) : sphericity(sphericity) {}
 
   constexpr std::string_view name() const { return "HaiderLevenspielTerminalVelocity"; }
   constexpr std::string_view reference() const {
@@ -53,7 +53,7 @@ struct HaiderLevenspielTerminalVelocity : ArchimedesCorrelation<HaiderLevenspiel
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
     using std::sqrt;
     using T = value_type_of<S>;
-    const T c = T(2.3348L) - T(1.7439L) * T(sphericity);
+    const T c = FLUIDBED_DECIMAL(T, 2.3348) - FLUIDBED_DECIMAL(T, 1.7439) * T(sphericity);
     return archimedes / (18 + c * sqrt(archimedes));
   }
 };

@@ -60,7 +60,7 @@ struct NewtonTerminalVelocity : ArchimedesCorrelation<NewtonTerminalVelocity> {
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
     using std::sqrt;
     using T = value_type_of<S>;
-    return sqrt(archimedes / (T(0.75) * T(0.44L)));
+    return sqrt(archimedes / (T(0.75) * FLUIDBED_DECIMAL(T, 0.44)));
   }
 };
 
@@ -86,9 +86,11 @@ struct DallavalleTerminalVelocity : ArchimedesCorrelation<DallavalleTerminalVelo
     using std::sqrt;
     using T = value_type_of<S>;
     if constexpr (is_dual<S>::value)
-      if (archimedes == T(0)) return archimedes / T(17.28L);
+      if (archimedes == T(0)) return archimedes / FLUIDBED_DECIMAL(T, 17.28);
     const S s = sqrt(4 * archimedes / 3);
-    const S root = 2 * s / (T(4.8L) + sqrt(T(4.8L) * T(4.8L) + T(2.52L) * s));
+    const S root = 2 * s /
+                   (FLUIDBED_DECIMAL(T, 4.8) +
+                    sqrt(FLUIDBED_DECIMAL(T, 4.8) * FLUIDBED_DECIMAL(T, 4.8) + FLUIDBED_DECIMAL(T, 2.52) * s));
     return root * root;
   }
 };
