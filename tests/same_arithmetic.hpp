@@ -6,7 +6,6 @@
 // contract the two paths differently: they then agree only to rounding.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,7 +22,9 @@ inline constexpr bool exact_agreement = true;
 template <class T>
 bool same_arithmetic(T a, T b) {
   if (exact_agreement || a == b) return a == b;
-  return std::abs(a - b) <= T(64) * std::numeric_limits<T>::epsilon() * std::max(std::abs(a), std::abs(b));
+  using std::abs;  // and Boost.Multiprecision's by argument-dependent lookup
+  const T larger = abs(a) > abs(b) ? T(abs(a)) : T(abs(b));
+  return T(abs(a - b)) <= T(64) * std::numeric_limits<T>::epsilon() * larger;
 }
 
 }  // namespace fluidbed::test

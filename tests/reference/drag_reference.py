@@ -24,7 +24,7 @@ from fractions import Fraction
 
 from mpmath import mp, mpf, sqrt, exp, log, log10, atan, pi, cbrt, findroot, nstr
 
-mp.dps = 40
+mp.dps = max(mp.dps, 40)  # or more where an importer asked for it (scalar_types_reference.py)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 G = mpf('9.81')

@@ -40,7 +40,7 @@ sys.dont_write_bytecode = True  # keep the folder free of __pycache__
 
 from mpmath import mp, mpf, sqrt, pi, cbrt, nstr, diff, log10, floor, sin  # noqa: E402
 
-mp.dps = 40
+mp.dps = max(mp.dps, 40)  # or more where an importer asked for it (scalar_types_reference.py)
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Independent high-precision reference for the scalar-type tests (tests/test_scalar_types_*.cpp):
 every closure of the drag, settling, elastic/stability and kinetic-theory families evaluated at
-inputs that float, double and x87 long double all represent exactly, to 25 significant digits.
+inputs that float, double and x87 long double all represent exactly, to 55 significant digits.
 
 Writes scalar_types_reference.csv (next to this file), one row per (family, closure, input):
     family,closure,p1,p2,p3,p4,p5,p6,p7,p8,value,d1,d2
@@ -15,7 +15,10 @@ which float and double round differently, and their values to 17 digits, which i
 long double. Here every input is a dyadic rational with at most 24 significant bits (asserted),
 so the C++ test converts it to float, double and long double exactly, and each result differs
 from the value below only by the rounding inside the closure: the test's tolerance can be a
-small multiple of the type's epsilon. 25 digits resolve long double's 64 bits.
+small multiple of the type's epsilon. The values have 55 significant digits, so that a 50-digit type
+(Boost's cpp_bin_float_50, 168 bits, epsilon 2^-167 = 5.3e-51) can be tested the same way: the
+printed value is then within 5e-55 relative of the exact one, 1e-4 of that epsilon. The inputs
+print exactly (asserted): a type that parses them gets the same number as one that converts them.
 
 Conventions: the closures' published decimal constants (0.175, 4.8, 0.63, ...) are exact
 decimals here, as in the other generators. A law's run-time parameters are double members of
@@ -25,12 +28,19 @@ and margins of the radial distributions): they enter here as the exact values of
 default standard_gravity_as<T>() is 9.81 rounded once to T, an input rounding the tests allow
 for). Derivatives are mpmath.diff of the value function with the branch of the state frozen.
 
+Precision. Everything runs at mp.dps = 80 (the imported generators keep a precision raised before
+they are imported, so that their constants, 9.81 and the published decimals, have 80 digits too);
+the roots (Re*, Schiller-Naumann's Re_t, the equilibrium voidage, the stability points) are converged
+to that precision, and mpmath.diff evaluates at twice it. Running the script at mp.dps = 100 changes
+no printed digit of any value or derivative beyond the 53rd (checked when the precision was raised).
+
 The formulas are those of drag_reference.py, settling_reference.py, stability_reference.py and
 ktgf_reference.py (imported, never re-typed); this script only chooses inputs and writes.
 It never reads the C++ code. Run with Debian's python: /usr/bin/python3 scalar_types_reference.py
 """
 import os
 import sys
+from decimal import Decimal
 from fractions import Fraction
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -38,12 +48,14 @@ sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # keep the folder free of __pycache__
 
 from mpmath import mp, mpf, nstr, diff, sqrt, log, sin  # noqa: E402
+
+mp.dps = 80  # before the imports: they keep a precision raised by their importer
+DIGITS = 55  # significant digits of the values and derivatives written
 import drag_reference as dr  # noqa: E402
 import settling_reference as sr  # noqa: E402
 import stability_reference as st  # noqa: E402
 import ktgf_reference as kt  # noqa: E402
 
-mp.dps = 40
 G = dr.G  # 9.81
 ROWS = []
 # Syamlal-O'Brien's c1 = 0.8 and d1 = 2.65 are double members of the C++ law
@@ -73,15 +85,21 @@ def fraction(x):
     return Fraction(man) * Fraction(2) ** e
 
 
+def exact_text(x):
+    """an input (a dyadic rational of at most 24 bits, or a double) as its exact decimal"""
+    assert mpf(float(x)) == x, 'an input is not a double'
+    return str(Decimal(float(x)))
+
+
 def text(x):
-    """inputs print exactly (every one has < 25 significant digits); results to 25 digits"""
-    return nstr(mpf(x), 25, strip_zeros=True) if x != 0 else '0'
+    """a result to DIGITS significant digits"""
+    return nstr(mpf(x), DIGITS, strip_zeros=True) if x != 0 else '0'
 
 
 def row(family, closure, inputs, value, d1=None, d2=None):
     assert len(inputs) <= 8
     ps = list(inputs) + [mpf(0)] * (8 - len(inputs))
-    ROWS.append(','.join([family, closure] + [text(p) for p in ps] + [text(value)] +
+    ROWS.append(','.join([family, closure] + [exact_text(p) for p in ps] + [text(value)] +
                          ['' if d is None else text(d) for d in (d1, d2)]))
 
 
@@ -120,7 +138,7 @@ def drag_laws():
     # ConstantExponentDrag holds its exponent as a double: 2.65 for Lewis and WenYuGidaspow (also the
     # dilute branch of both Gidaspow laws)
     def constant_exponent(alpha):
-        return generic(dr.make_wenyu_classical(nstr(of_double(alpha), 30)))
+        return generic(dr.make_wenyu_classical(exact_text(alpha)))
     lewis = constant_exponent(2.65)
 
     def wen_yu_gidaspow(eps, w, rho, mu, d):
@@ -213,7 +231,7 @@ def equilibrium_voidage(beta, us, rho, mu, rp, d):
             a = m
         else:
             b = m
-    assert b - a < mpf(10) ** -35
+    assert b - a < mpf(10) ** -(DIGITS + 5)
     return (a + b) / 2
 
 

@@ -30,7 +30,7 @@ from mpmath import mp, mpf, sqrt, log, exp, pi, findroot, nstr, diff, mpc  # noq
 import drag_reference as dr  # noqa: E402
 import settling_reference as sr  # noqa: E402
 
-mp.dps = 40
+mp.dps = max(mp.dps, 40)  # or more where an importer asked for it (scalar_types_reference.py)
 M, out, close, G = dr.M, dr.out, dr.close, dr.G
 n_e = dr.n_e  # seed 000 eq 3.24 / 3.54
 
