@@ -35,7 +35,7 @@ FLUIDBED_HOST_DEVICE S dilute_viscosity(const S& theta, const GranularMaterial<T
 // the 10⁻⁵ keeps it finite at φ = 0), shared by their viscosity and conductivity.
 template <class S, class T>
 FLUIDBED_HOST_DEVICE constexpr S hrenya_sinclair_path_factor(const S& phi, const T& diameter, double length_scale) {
-  return 1 + diameter / (6 * numbers::sqrt2<T>() * T(length_scale)) / (phi + T(1e-5L));
+  return 1 + diameter / (6 * numbers::sqrt2<T>() * T(length_scale)) / (phi + FLUIDBED_DECIMAL(T, 1e-5));
 }
 
 // Hrenya and Sinclair's length L > 0 (their viscosity and conductivity), and the L they are
