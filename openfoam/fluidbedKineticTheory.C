@@ -145,7 +145,8 @@ const dictionary& compareDict(const dictionary& coeffs)
 Foam::kineticTheoryModels::fluidbedLaw::fluidbedLaw
 (
     const dictionary& dict,
-    fluidbed_kt_kind kind
+    fluidbed_kt_kind kind,
+    const wordList& ownKeys
 )
 {
     const word name(dict.get<word>("law"));
@@ -159,7 +160,7 @@ Foam::kineticTheoryModels::fluidbedLaw::fluidbedLaw
     forAllConstIters(dict, iter)
     {
         const entry& e = *iter;
-        if (e.isDict() || e.keyword() == "law")
+        if (e.isDict() || e.keyword() == "law" || ownKeys.found(e.keyword()))
         {
             continue;
         }
@@ -244,7 +245,19 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::fluidbedRadial
 )
 :
     radialModel(dict),
-    law_(dict.subDict("fluidbedRadialCoeffs"), FLUIDBED_KT_RADIAL_DISTRIBUTION)
+    law_
+    (
+        dict.subDict("fluidbedRadialCoeffs"),
+        FLUIDBED_KT_RADIAL_DISTRIBUTION,
+        wordList(1, word("slopeFloor"))
+    ),
+    slopeFloor_
+    (
+        dict.subDict("fluidbedRadialCoeffs").getOrDefault<scalar>
+        (
+            "slopeFloor", 1e-6
+        )
+    )
 {
     const dictionary& coeffs = dict.subDict("fluidbedRadialCoeffs");
     if (coeffs.found("compareWith"))
@@ -255,17 +268,19 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::fluidbedRadial
 }
 
 
-void Foam::kineticTheoryModels::radialModels::fluidbedRadial::evaluate
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::radialModels::fluidbedRadial::evaluate
 (
     const volScalarField& alpha,
     const dimensionedScalar& alphaMinFriction,
     const dimensionedScalar& alphaMax,
-    volScalarField& g0,
-    volScalarField& g0prime
+    bool slope
 ) const
 {
     const fvMesh& mesh = alpha.mesh();
     const tmp<volScalarField> tphi(solidFraction(alpha));
+    tmp<volScalarField> tg0(newField("g0", mesh, dimless));
+    tmp<volScalarField> tg0prime(newField("g0prime", mesh, dimless));
     forEachPart(mesh, [&](const label part)
     {
         char message[1024];
@@ -274,13 +289,15 @@ void Foam::kineticTheoryModels::radialModels::fluidbedRadial::evaluate
         (
             fluidbed_kt_radial_distribution
             (
-                law_.get(), alphaMax.value(), alphaMinFriction.value(), n,
-                in(tphi(), part), out(g0, part), out(g0prime, part),
+                law_.get(), alphaMax.value(), alphaMinFriction.value(),
+                slopeFloor_, n, in(tphi(), part), out(tg0.ref(), part),
+                slope ? out(tg0prime.ref(), part) : nullptr,
                 message, sizeof message
             ),
             n, message
         );
     });
+    return slope ? tg0prime : tg0;
 }
 
 
@@ -292,9 +309,7 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0
     const dimensionedScalar& alphaMax
 ) const
 {
-    tmp<volScalarField> tg0(newField("g0", alpha.mesh(), dimless));
-    tmp<volScalarField> tg0prime(newField("g0prime", alpha.mesh(), dimless));
-    evaluate(alpha, alphaMinFriction, alphaMax, tg0.ref(), tg0prime.ref());
+    tmp<volScalarField> tg0(evaluate(alpha, alphaMinFriction, alphaMax, false));
     if (reference_.valid())
     {
         comparison_->report
@@ -315,9 +330,10 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0prime
     const dimensionedScalar& alphaMax
 ) const
 {
-    tmp<volScalarField> tg0(newField("g0", alpha.mesh(), dimless));
-    tmp<volScalarField> tg0prime(newField("g0prime", alpha.mesh(), dimless));
-    evaluate(alpha, alphaMinFriction, alphaMax, tg0.ref(), tg0prime.ref());
+    tmp<volScalarField> tg0prime
+    (
+        evaluate(alpha, alphaMinFriction, alphaMax, true)
+    );
     if (reference_.valid())
     {
         comparison_->report

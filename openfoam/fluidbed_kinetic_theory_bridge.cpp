@@ -4,7 +4,10 @@
 // with_derivatives (dual numbers), never finite differences.
 #include "fluidbed_kinetic_theory_bridge.h"
 
+#include <algorithm>
 #include <array>
+#include <cfenv>
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <numbers>
@@ -134,6 +137,19 @@ size_t over_cells(const fluidbed_kt_law* law, size_t n, char* message, size_t me
   return i;
 }
 
+// Holds the floating-point environment with every trap disabled while it lives; restores it
+// (traps and flags) on leaving, exceptions included.
+class HeldFloatingPointTraps {
+ public:
+  HeldFloatingPointTraps() { std::feholdexcept(&saved_); }
+  ~HeldFloatingPointTraps() { std::fesetenv(&saved_); }
+  HeldFloatingPointTraps(const HeldFloatingPointTraps&) = delete;
+  HeldFloatingPointTraps& operator=(const HeldFloatingPointTraps&) = delete;
+
+ private:
+  std::fenv_t saved_;
+};
+
 }  // namespace
 
 extern "C" fluidbed_kt_law* fluidbed_kt_law_create(fluidbed_kt_kind kind, const char* name, char* message,
@@ -180,12 +196,17 @@ extern "C" int fluidbed_kt_law_set(fluidbed_kt_law* law, const char* key, double
 }
 
 extern "C" size_t fluidbed_kt_radial_distribution(const fluidbed_kt_law* law, double max_packing,
-                                                  double min_fraction, size_t n, const double* phi, double* g0,
-                                                  double* g0_slope, char* message, size_t message_size) {
+                                                  double min_fraction, double slope_floor, size_t n, const double* phi,
+                                                  double* g0, double* g0_slope, char* message, size_t message_size) {
+  // The cube-root forms' slope at φ = 0 is 1/0, which a host may trap (OpenFOAM does): it is
+  // computed with the floating-point traps held, and a non-finite slope is taken at slope_floor.
+  const HeldFloatingPointTraps held;
   return over_cells<FLUIDBED_KT_RADIAL_DISTRIBUTION>(law, n, message, message_size, [&](const auto& l, size_t i) {
-    const auto r = with_limits(l, max_packing, min_fraction).checked_with_derivatives(phi[i]);
-    g0[i] = r.value;
-    if (g0_slope != nullptr) g0_slope[i] = r.d_solid_fraction;
+    const auto limited = with_limits(l, max_packing, min_fraction);
+    g0[i] = limited.checked(phi[i]);
+    if (g0_slope == nullptr) return;
+    const double slope = limited.checked_with_derivatives(phi[i]).d_solid_fraction;
+    g0_slope[i] = std::isfinite(slope) ? slope : limited.checked_with_derivatives(slope_floor).d_solid_fraction;
   });
 }
 

@@ -50,10 +50,12 @@ int fluidbed_kt_law_set(fluidbed_kt_law* law, const char* key, double value, cha
 /* In every evaluation below, max_packing and min_fraction (OpenFOAM's alphaMax and
  * alphaMinFriction) replace the law's φ_max and onset of friction where it has them. */
 
-/* Radial distribution: g0[i] = g0(phi[i]) and, if g0_slope is not NULL, g0_slope[i] = dg0/dφ. */
+/* Radial distribution: g0[i] = g0(phi[i]) and, if g0_slope is not NULL, g0_slope[i] = dg0/dφ, or
+ * where that is not finite (the cube-root forms at φ = 0: +∞, a division by zero computed with
+ * the floating-point traps held) the slope at slope_floor. */
 size_t fluidbed_kt_radial_distribution(const fluidbed_kt_law* law, double max_packing, double min_fraction,
-                                       size_t n, const double* phi, double* g0, double* g0_slope, char* message,
-                                       size_t message_size);
+                                       double slope_floor, size_t n, const double* phi, double* g0, double* g0_slope,
+                                       char* message, size_t message_size);
 
 /* Granular pressure per unit granular temperature: coefficient[i] = p_s/Θ [kg m^-3] at
  * (phi[i], g0[i], rho_s[i], restitution) and, if slope is not NULL, slope[i] = its total
