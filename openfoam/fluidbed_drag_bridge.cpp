@@ -2,30 +2,20 @@
 // registry evaluated over whole arrays, one dispatch on the law per array, not per cell.
 #include "fluidbed_drag_bridge.h"
 
-#include <algorithm>
-#include <cstring>
 #include <exception>
 #include <string>
 #include <string_view>
 #include <variant>
 
 #include "fluidbed/drag.hpp"
+#include "fluidbed_bridge_message.hpp"
 
 struct fluidbed_drag_law {
   fluidbed::drag::AnyDragLaw law;
   std::string name;  // name() is a view, not necessarily terminated
 };
 
-namespace {
-
-void write_message(std::string_view text, char* message, size_t message_size) {
-  if (message == nullptr || message_size == 0) return;
-  const size_t n = std::min(text.size(), message_size - 1);
-  std::memcpy(message, text.data(), n);
-  message[n] = '\0';
-}
-
-}  // namespace
+using fluidbed::openfoam::write_message;
 
 extern "C" fluidbed_drag_law* fluidbed_drag_law_create(const char* name, char* message, size_t message_size) {
   try {

@@ -1,0 +1,824 @@
+#include "fluidbedKineticTheory.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvcGrad.H"
+
+namespace Foam
+{
+namespace kineticTheoryModels
+{
+namespace radialModels
+{
+    defineTypeNameAndDebug(fluidbedRadial, 0);
+    addToRunTimeSelectionTable(radialModel, fluidbedRadial, dictionary);
+}
+namespace granularPressureModels
+{
+    defineTypeNameAndDebug(fluidbedGranularPressure, 0);
+    addToRunTimeSelectionTable
+    (
+        granularPressureModel,
+        fluidbedGranularPressure,
+        dictionary
+    );
+}
+namespace viscosityModels
+{
+    defineTypeNameAndDebug(fluidbedViscosity, 0);
+    addToRunTimeSelectionTable(viscosityModel, fluidbedViscosity, dictionary);
+}
+namespace conductivityModels
+{
+    defineTypeNameAndDebug(fluidbedConductivity, 0);
+    addToRunTimeSelectionTable
+    (
+        conductivityModel,
+        fluidbedConductivity,
+        dictionary
+    );
+}
+namespace frictionalStressModels
+{
+    defineTypeNameAndDebug(fluidbedFrictionalStress, 0);
+    addToRunTimeSelectionTable
+    (
+        frictionalStressModel,
+        fluidbedFrictionalStress,
+        dictionary
+    );
+}
+}
+}
+
+
+namespace
+{
+
+using namespace Foam;
+
+// A field's values are evaluated part by part: the cells (part -1), then
+// each boundary patch, one bridge call per array.
+template<class Evaluate>
+void forEachPart(const fvMesh& mesh, const Evaluate& evaluate)
+{
+    evaluate(label(-1));
+    forAll(mesh.boundary(), patchi)
+    {
+        evaluate(patchi);
+    }
+}
+
+label partSize(const fvMesh& mesh, const label part)
+{
+    return part < 0 ? mesh.nCells() : mesh.boundary()[part].size();
+}
+
+const scalar* in(const volScalarField& field, const label part)
+{
+    return
+        part < 0
+      ? field.primitiveField().cdata()
+      : field.boundaryField()[part].cdata();
+}
+
+scalar* out(volScalarField& field, const label part)
+{
+    return
+        part < 0
+      ? field.primitiveFieldRef().data()
+      : field.boundaryFieldRef()[part].data();
+}
+
+tmp<volScalarField> newField
+(
+    const word& name,
+    const fvMesh& mesh,
+    const dimensionSet& dimensions
+)
+{
+    return tmp<volScalarField>
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                "fluidbed:" + name,
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimensions, Zero)
+        )
+    );
+}
+
+// The solids fraction the laws take: a negative round-off of the
+// transported fraction is 0.
+tmp<volScalarField> solidFraction(const volScalarField& alpha)
+{
+    return max(alpha, scalar(0));
+}
+
+// The rate-of-strain invariants the frictional laws take: tr D and D':D'.
+tmp<volScalarField> divergence(const volSymmTensorField& D)
+{
+    return tr(D);
+}
+
+tmp<volScalarField> contraction(const volSymmTensorField& D)
+{
+    return dev(D) && dev(D);
+}
+
+const dictionary& compareDict(const dictionary& coeffs)
+{
+    return coeffs.subDict("compareWith");
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * fluidbedLaw  * * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::fluidbedLaw::fluidbedLaw
+(
+    const dictionary& dict,
+    fluidbed_kt_kind kind,
+    const wordList& ownKeys
+)
+{
+    const word name(dict.get<word>("law"));
+    char message[1024];
+    law_.reset(fluidbed_kt_law_create(kind, name.c_str(), message, sizeof message));
+    if (!law_)
+    {
+        FatalIOErrorInFunction(dict) << message << exit(FatalIOError);
+    }
+    // Every other scalar entry is a parameter of the law.
+    forAllConstIters(dict, iter)
+    {
+        const entry& e = *iter;
+        if (e.isDict() || e.keyword() == "law" || ownKeys.found(e.keyword()))
+        {
+            continue;
+        }
+        const scalar value = dict.get<scalar>(e.keyword());
+        if (!fluidbed_kt_law_set(law_.get(), e.keyword().c_str(), value, message, sizeof message))
+        {
+            FatalIOErrorInFunction(dict) << message << exit(FatalIOError);
+        }
+    }
+    Info<< "fluidbed kinetic-theory law " << this->name() << endl;
+}
+
+
+void Foam::kineticTheoryModels::fluidbedLaw::check
+(
+    size_t evaluated,
+    label n,
+    const char* message
+) const
+{
+    if (evaluated != static_cast<size_t>(n))
+    {
+        FatalErrorInFunction
+            << "fluidbed law " << name() << ", element " << evaluated
+            << ": " << message << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * fluidbedComparison * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::fluidbedComparison::fluidbedComparison
+(
+    const dictionary& compareDict
+)
+:
+    minAlpha_(compareDict.getOrDefault<scalar>("minAlpha", 0)),
+    maxAlpha_(compareDict.getOrDefault<scalar>("maxAlpha", 1))
+{}
+
+
+void Foam::kineticTheoryModels::fluidbedComparison::report
+(
+    const word& quantity,
+    const char* law,
+    const word& against,
+    const volScalarField& alpha,
+    const volScalarField& ours,
+    const volScalarField& theirs
+) const
+{
+    scalar maxRelative = 0;
+    label compared = 0;
+    forAll(ours, celli)
+    {
+        if (alpha[celli] >= minAlpha_ && alpha[celli] <= maxAlpha_)
+        {
+            const scalar a = ours[celli], b = theirs[celli];
+            const scalar scale = max(mag(a), mag(b));
+            // A NaN of either side is reported as such.
+            const scalar relative =
+                (a == b) ? scalar(0) : mag(a - b)/scale;
+            maxRelative = (relative > maxRelative || relative != relative)
+              ? relative : maxRelative;
+            ++compared;
+        }
+    }
+    reduce(maxRelative, maxOp<scalar>());
+    reduce(compared, sumOp<label>());
+    Info<< "fluidbed: " << quantity << " of " << law << " against "
+        << against << ": max relative difference " << maxRelative
+        << " over " << compared << " cells with " << minAlpha_
+        << " <= alpha <= " << maxAlpha_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * * radial * * * * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::radialModels::fluidbedRadial::fluidbedRadial
+(
+    const dictionary& dict
+)
+:
+    radialModel(dict),
+    law_
+    (
+        dict.subDict("fluidbedRadialCoeffs"),
+        FLUIDBED_KT_RADIAL_DISTRIBUTION,
+        wordList(1, word("slopeFloor"))
+    ),
+    slopeFloor_
+    (
+        dict.subDict("fluidbedRadialCoeffs").getOrDefault<scalar>
+        (
+            "slopeFloor", 1e-6
+        )
+    )
+{
+    const dictionary& coeffs = dict.subDict("fluidbedRadialCoeffs");
+    if (coeffs.found("compareWith"))
+    {
+        reference_.reset(radialModel::New(compareDict(coeffs)).ptr());
+        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::radialModels::fluidbedRadial::evaluate
+(
+    const volScalarField& alpha,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax,
+    bool slope
+) const
+{
+    const fvMesh& mesh = alpha.mesh();
+    const tmp<volScalarField> tphi(solidFraction(alpha));
+    tmp<volScalarField> tg0(newField("g0", mesh, dimless));
+    tmp<volScalarField> tg0prime(newField("g0prime", mesh, dimless));
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        law_.check
+        (
+            fluidbed_kt_radial_distribution
+            (
+                law_.get(), alphaMax.value(), alphaMinFriction.value(),
+                slopeFloor_, n, in(tphi(), part), out(tg0.ref(), part),
+                slope ? out(tg0prime.ref(), part) : nullptr,
+                message, sizeof message
+            ),
+            n, message
+        );
+    });
+    return slope ? tg0prime : tg0;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0
+(
+    const volScalarField& alpha,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax
+) const
+{
+    tmp<volScalarField> tg0(evaluate(alpha, alphaMinFriction, alphaMax, false));
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "g0", law_.name(), reference_->type(), alpha, tg0(),
+            reference_->g0(alpha, alphaMinFriction, alphaMax)()
+        );
+    }
+    return tg0;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0prime
+(
+    const volScalarField& alpha,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax
+) const
+{
+    tmp<volScalarField> tg0prime
+    (
+        evaluate(alpha, alphaMinFriction, alphaMax, true)
+    );
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "g0prime", law_.name(), reference_->type(), alpha, tg0prime(),
+            reference_->g0prime(alpha, alphaMinFriction, alphaMax)()
+        );
+    }
+    return tg0prime;
+}
+
+
+// * * * * * * * * * * * * * * * granular pressure * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::granularPressureModels::fluidbedGranularPressure::
+fluidbedGranularPressure(const dictionary& dict)
+:
+    granularPressureModel(dict),
+    law_
+    (
+        dict.subDict("fluidbedGranularPressureCoeffs"),
+        FLUIDBED_KT_GRANULAR_PRESSURE
+    )
+{
+    const dictionary& coeffs = dict.subDict("fluidbedGranularPressureCoeffs");
+    if (coeffs.found("compareWith"))
+    {
+        reference_.reset(granularPressureModel::New(compareDict(coeffs)).ptr());
+        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::granularPressureModels::fluidbedGranularPressure::
+evaluate
+(
+    const volScalarField& alpha1,
+    const volScalarField& g0,
+    const volScalarField* g0prime,
+    const volScalarField& rho1,
+    const dimensionedScalar& e
+) const
+{
+    const fvMesh& mesh = alpha1.mesh();
+    const tmp<volScalarField> tphi(solidFraction(alpha1));
+    tmp<volScalarField> tcoeff
+    (
+        newField("granularPressureCoeff", mesh, rho1.dimensions())
+    );
+    tmp<volScalarField> tslope
+    (
+        newField("granularPressureCoeffPrime", mesh, rho1.dimensions())
+    );
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        law_.check
+        (
+            fluidbed_kt_granular_pressure
+            (
+                law_.get(), n, in(tphi(), part), in(g0, part),
+                g0prime ? in(*g0prime, part) : nullptr, in(rho1, part),
+                e.value(), out(tcoeff.ref(), part),
+                g0prime ? out(tslope.ref(), part) : nullptr,
+                message, sizeof message
+            ),
+            n, message
+        );
+    });
+    return g0prime ? tslope : tcoeff;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::granularPressureModels::fluidbedGranularPressure::
+granularPressureCoeff
+(
+    const volScalarField& alpha1,
+    const volScalarField& g0,
+    const volScalarField& rho1,
+    const dimensionedScalar& e
+) const
+{
+    tmp<volScalarField> tcoeff(evaluate(alpha1, g0, nullptr, rho1, e));
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "granularPressureCoeff", law_.name(), reference_->type(), alpha1,
+            tcoeff(), reference_->granularPressureCoeff(alpha1, g0, rho1, e)()
+        );
+    }
+    return tcoeff;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::granularPressureModels::fluidbedGranularPressure::
+granularPressureCoeffPrime
+(
+    const volScalarField& alpha1,
+    const volScalarField& g0,
+    const volScalarField& g0prime,
+    const volScalarField& rho1,
+    const dimensionedScalar& e
+) const
+{
+    tmp<volScalarField> tslope(evaluate(alpha1, g0, &g0prime, rho1, e));
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "granularPressureCoeffPrime", law_.name(), reference_->type(),
+            alpha1, tslope(),
+            reference_->granularPressureCoeffPrime
+            (
+                alpha1, g0, g0prime, rho1, e
+            )()
+        );
+    }
+    return tslope;
+}
+
+
+// * * * * * * * * * * * * * * * * viscosity * * * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::viscosityModels::fluidbedViscosity::
+fluidbedViscosity(const dictionary& dict)
+:
+    viscosityModel(dict),
+    law_(dict.subDict("fluidbedViscosityCoeffs"), FLUIDBED_KT_SHEAR_VISCOSITY)
+{
+    const dictionary& coeffs = dict.subDict("fluidbedViscosityCoeffs");
+    if (coeffs.found("compareWith"))
+    {
+        reference_.reset(viscosityModel::New(compareDict(coeffs)).ptr());
+        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::viscosityModels::fluidbedViscosity::nu
+(
+    const volScalarField& alpha1,
+    const volScalarField& Theta,
+    const volScalarField& g0,
+    const volScalarField& rho1,
+    const volScalarField& da,
+    const dimensionedScalar& e
+) const
+{
+    const fvMesh& mesh = alpha1.mesh();
+    const tmp<volScalarField> tphi(solidFraction(alpha1));
+    tmp<volScalarField> tnu(newField("nu", mesh, dimViscosity));
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        law_.check
+        (
+            fluidbed_kt_shear_viscosity
+            (
+                law_.get(), n, in(tphi(), part), in(Theta, part),
+                in(g0, part), in(da, part), in(rho1, part), e.value(),
+                out(tnu.ref(), part), message, sizeof message
+            ),
+            n, message
+        );
+    });
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "nu", law_.name(), reference_->type(), alpha1, tnu(),
+            reference_->nu(alpha1, Theta, g0, rho1, da, e)()
+        );
+    }
+    return tnu;
+}
+
+
+// * * * * * * * * * * * * * * * * conductivity  * * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::
+fluidbedConductivity(const dictionary& dict)
+:
+    conductivityModel(dict),
+    law_(dict.subDict("fluidbedConductivityCoeffs"), FLUIDBED_KT_CONDUCTIVITY)
+{
+    const dictionary& coeffs = dict.subDict("fluidbedConductivityCoeffs");
+    if (coeffs.found("compareWith"))
+    {
+        reference_.reset(conductivityModel::New(compareDict(coeffs)).ptr());
+        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::kappa
+(
+    const volScalarField& alpha1,
+    const volScalarField& Theta,
+    const volScalarField& g0,
+    const volScalarField& rho1,
+    const volScalarField& da,
+    const dimensionedScalar& e
+) const
+{
+    const fvMesh& mesh = alpha1.mesh();
+    const tmp<volScalarField> tphi(solidFraction(alpha1));
+    tmp<volScalarField> tkappa
+    (
+        newField("kappa", mesh, dimensionSet(1, -1, -1, 0, 0))
+    );
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        law_.check
+        (
+            fluidbed_kt_conductivity
+            (
+                law_.get(), n, in(tphi(), part), in(Theta, part),
+                in(g0, part), in(da, part), in(rho1, part), e.value(),
+                out(tkappa.ref(), part), message, sizeof message
+            ),
+            n, message
+        );
+    });
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "kappa", law_.name(), reference_->type(), alpha1, tkappa(),
+            reference_->kappa(alpha1, Theta, g0, rho1, da, e)()
+        );
+    }
+    return tkappa;
+}
+
+
+// * * * * * * * * * * * * * * * frictional stress * * * * * * * * * * * * * //
+
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+fluidbedFrictionalStress(const dictionary& dict)
+:
+    frictionalStressModel(dict)
+{
+    const dictionary& coeffs = dict.subDict("fluidbedFrictionalStressCoeffs");
+    if (coeffs.found("law"))
+    {
+        stress_.reset(new fluidbedLaw(coeffs, FLUIDBED_KT_FRICTIONAL_STRESS));
+    }
+    else
+    {
+        pressure_.reset
+        (
+            new fluidbedLaw
+            (
+                coeffs.subDict("pressure"), FLUIDBED_KT_FRICTIONAL_PRESSURE
+            )
+        );
+        if (coeffs.found("viscosity"))
+        {
+            viscosity_.reset
+            (
+                new fluidbedLaw
+                (
+                    coeffs.subDict("viscosity"),
+                    FLUIDBED_KT_FRICTIONAL_VISCOSITY
+                )
+            );
+        }
+        else
+        {
+            Info<< "fluidbed: no frictional viscosity law: nuFric is 0"
+                << endl;
+        }
+    }
+    if (coeffs.found("compareWith"))
+    {
+        reference_.reset(frictionalStressModel::New(compareDict(coeffs)).ptr());
+        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
+    }
+}
+
+
+const char*
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+pressureName() const
+{
+    return stress_.valid() ? stress_->name() : pressure_->name();
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+stress
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax,
+    const volSymmTensorField& D,
+    int which
+) const
+{
+    const fvMesh& mesh = phase.mesh();
+    const tmp<volScalarField> tphi(solidFraction(phase));
+    const volScalarField& Theta = mesh.lookupObject<volScalarField>
+    (
+        IOobject::groupName("Theta", phase.name())
+    );
+    const tmp<volScalarField> td(phase.d());
+    const tmp<volScalarField> tdivergence(divergence(D));
+    const tmp<volScalarField> tcontraction(contraction(D));
+    tmp<volScalarField> tpressure(newField("pf", mesh, dimPressure));
+    tmp<volScalarField> tslope(newField("pfPrime", mesh, dimPressure));
+    tmp<volScalarField> tmu(newField("muFric", mesh, dimDynamicViscosity));
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        stress_->check
+        (
+            fluidbed_kt_frictional_stress
+            (
+                stress_->get(), alphaMax.value(), alphaMinFriction.value(),
+                n, in(tphi(), part), in(Theta, part), in(td(), part),
+                in(tdivergence(), part), in(tcontraction(), part),
+                out(tpressure.ref(), part), out(tslope.ref(), part),
+                out(tmu.ref(), part), message, sizeof message
+            ),
+            n, message
+        );
+    });
+    return which == 0 ? tpressure : which == 1 ? tslope : tmu;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+pressure
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax,
+    bool slope
+) const
+{
+    const fvMesh& mesh = phase.mesh();
+    if (stress_.valid())
+    {
+        const volSymmTensorField D(symm(fvc::grad(phase.U())));
+        return stress(phase, alphaMinFriction, alphaMax, D, slope ? 1 : 0);
+    }
+    const tmp<volScalarField> tphi(solidFraction(phase));
+    tmp<volScalarField> tpressure(newField("pf", mesh, dimPressure));
+    tmp<volScalarField> tslope(newField("pfPrime", mesh, dimPressure));
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        pressure_->check
+        (
+            fluidbed_kt_frictional_pressure
+            (
+                pressure_->get(), alphaMax.value(), alphaMinFriction.value(),
+                n, in(tphi(), part), out(tpressure.ref(), part),
+                slope ? out(tslope.ref(), part) : nullptr,
+                message, sizeof message
+            ),
+            n, message
+        );
+    });
+    return slope ? tslope : tpressure;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+frictionalPressure
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax
+) const
+{
+    tmp<volScalarField> tpf(pressure(phase, alphaMinFriction, alphaMax, false));
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "frictionalPressure", pressureName(), reference_->type(), phase,
+            tpf(),
+            reference_->frictionalPressure(phase, alphaMinFriction, alphaMax)()
+        );
+    }
+    return tpf;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
+frictionalPressurePrime
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax
+) const
+{
+    tmp<volScalarField> tslope(pressure(phase, alphaMinFriction, alphaMax, true));
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "frictionalPressurePrime", pressureName(), reference_->type(),
+            phase, tslope(),
+            reference_->frictionalPressurePrime
+            (
+                phase, alphaMinFriction, alphaMax
+            )()
+        );
+    }
+    return tslope;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::nu
+(
+    const phaseModel& phase,
+    const dimensionedScalar& alphaMinFriction,
+    const dimensionedScalar& alphaMax,
+    const volScalarField& pf,
+    const volSymmTensorField& D
+) const
+{
+    const fvMesh& mesh = phase.mesh();
+    const volScalarField& rho = phase.rho();
+    tmp<volScalarField> tmu;
+    if (stress_.valid())
+    {
+        tmu = stress(phase, alphaMinFriction, alphaMax, D, 2);
+    }
+    else
+    {
+        tmu = newField("muFric", mesh, dimDynamicViscosity);
+        if (viscosity_.valid())
+        {
+            // The solver passes p_f/rho_s.
+            const tmp<volScalarField> tpressure(pf*rho);
+            const tmp<volScalarField> tdivergence(divergence(D));
+            const tmp<volScalarField> tcontraction(contraction(D));
+            forEachPart(mesh, [&](const label part)
+            {
+                char message[1024];
+                const label n = partSize(mesh, part);
+                viscosity_->check
+                (
+                    fluidbed_kt_frictional_viscosity
+                    (
+                        viscosity_->get(), n, in(tpressure(), part),
+                        in(tdivergence(), part), in(tcontraction(), part),
+                        out(tmu.ref(), part), message, sizeof message
+                    ),
+                    n, message
+                );
+            });
+        }
+    }
+    tmp<volScalarField> tnu(tmu/rho);
+    if (reference_.valid())
+    {
+        comparison_->report
+        (
+            "nuFric",
+            stress_.valid() ? stress_->name()
+          : viscosity_.valid() ? viscosity_->name() : "no viscosity law",
+            reference_->type(), phase, tnu(),
+            reference_->nu(phase, alphaMinFriction, alphaMax, pf, D)()
+        );
+    }
+    return tnu;
+}
