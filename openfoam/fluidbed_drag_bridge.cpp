@@ -42,7 +42,7 @@ extern "C" void fluidbed_drag_law_destroy(fluidbed_drag_law* law) { delete law; 
 extern "C" const char* fluidbed_drag_law_name(const fluidbed_drag_law* law) { return law->name.c_str(); }
 
 extern "C" size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_law* law, size_t n,
-                                                           const double* voidage, const double* slip,
+                                                           const double* particle_fraction, const double* slip,
                                                            const double* fluid_density, const double* fluid_viscosity,
                                                            const double* diameter, double* beta, char* message,
                                                            size_t message_size) {
@@ -51,9 +51,14 @@ extern "C" size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_l
     std::visit(
         [&](const auto& l) {
           for (; i < n; ++i) {
-            const fluidbed::drag::DragState<double> state{
-                voidage[i], slip[i], {fluid_density[i], fluid_viscosity[i]}, diameter[i]};
-            beta[i] = l.checked(state).pressure_gradient();
+            // With x86's long double (64 significand bits) 1 - phi rounds by at most 2^-65, so the law's
+            // phi = 1 - voidage is the particle fraction to 3e-14 relative at phi = 1e-6.
+            using wide = long double;
+            const fluidbed::drag::DragState<wide> state{wide(1) - wide(particle_fraction[i]),
+                                                        wide(slip[i]),
+                                                        {wide(fluid_density[i]), wide(fluid_viscosity[i])},
+                                                        wide(diameter[i])};
+            beta[i] = static_cast<double>(l.checked(state).pressure_gradient());
           }
         },
         law->law);

@@ -39,7 +39,7 @@ else:
     if compare:
         body += (f'        compareWith\n        {{\n            type            {compare};\n'
                  '            residualRe      1e-3;\n            swarmCorrection { type none; }\n'
-                 '            minAlpha        1e-4;\n        }\n')
+                 '        }\n')
     control = open('system/controlDict').read()
     control = re.sub(r'^(application .*\n)', rf'\1libs            ("{lib}");\n', control, count=1, flags=re.M)
     open('system/controlDict', 'w').write(control)
