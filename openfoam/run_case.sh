@@ -11,8 +11,10 @@
 # COMPARE_WITH: an OpenFOAM drag type the plugin also evaluates each step, logging the largest
 # relative difference of K (the plugin's compareWith check).
 # The plugin is FLUIDBED_OPENFOAM_LIB (default build/openfoam/libfluidbedOpenFOAM.so).
+# FLUIDBED_CASE_SETUP: a shell command run in the case folder once it is set up, before blockMesh
+# (the tests use it to change initial fields, solver tolerances or the drag dictionary).
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n '2,14p' "$0"; exit 2; }
+[ $# -ge 3 ] || { sed -n '2,16p' "$0"; exit 2; }
 case_dir=$1 model=$2 steps=$3 nprocs=${4:-1} compare=${5:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
 lib=$(realpath "${FLUIDBED_OPENFOAM_LIB:-$root/build/openfoam/libfluidbedOpenFOAM.so}")
@@ -47,6 +49,7 @@ props = props[:drag.start()] + '(particles in air)\n    {\n' + body + '    }' + 
 open('constant/phaseProperties', 'w').write(props)
 PY
 
+[ -z "${FLUIDBED_CASE_SETUP:-}" ] || bash -c "$FLUIDBED_CASE_SETUP"
 blockMesh > log.blockMesh 2>&1
 if [ "$nprocs" -gt 1 ]; then
   cat > system/decomposeParDict <<DICT
