@@ -50,15 +50,20 @@ extern "C" size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_l
   try {
     std::visit(
         [&](const auto& l) {
+          const auto beta_as = [&](auto one) {
+            using T = decltype(one);
+            const fluidbed::drag::DragState<T> state{one - T(particle_fraction[i]),
+                                                     T(slip[i]),
+                                                     {T(fluid_density[i]), T(fluid_viscosity[i])},
+                                                     T(diameter[i])};
+            return static_cast<double>(l.checked(state).pressure_gradient());
+          };
           for (; i < n; ++i) {
-            // With x86's long double (64 significand bits) 1 - phi rounds by at most 2^-65, so the law's
-            // phi = 1 - voidage is the particle fraction to 3e-14 relative at phi = 1e-6.
-            using wide = long double;
-            const fluidbed::drag::DragState<wide> state{wide(1) - wide(particle_fraction[i]),
-                                                        wide(slip[i]),
-                                                        {wide(fluid_density[i]), wide(fluid_viscosity[i])},
-                                                        wide(diameter[i])};
-            beta[i] = static_cast<double>(l.checked(state).pressure_gradient());
+            // The law forms phi back as 1 - voidage. In double, 1 - phi rounds by up to 2^-54, which
+            // is more than 2^-50 of phi below phi = 1/16: there the law runs in long double, where
+            // (x86: 64 significand bits) the rounding is 2^-65, 3e-14 of phi at phi = 1e-6.
+            const bool small = particle_fraction[i] > 0 && particle_fraction[i] < 0.0625;
+            beta[i] = small ? beta_as(1.0L) : beta_as(1.0);
           }
         },
         law->law);
