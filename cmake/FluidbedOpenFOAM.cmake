@@ -10,13 +10,13 @@ if(DEFINED ENV{FLUIDBED_OPENFOAM_SRC})
   set(fluidbed_openfoam_cache $ENV{FLUIDBED_OPENFOAM_SRC})
 endif()
 file(GLOB fluidbed_openfoam_trees LIST_DIRECTORIES true ${fluidbed_openfoam_cache}/openfoam-*)
-set(fluidbed_openfoam_newest "")
+# Cached only once found, so that a build folder configured before the installation finds it later.
 if(fluidbed_openfoam_trees)
   list(SORT fluidbed_openfoam_trees)
   list(POP_BACK fluidbed_openfoam_trees fluidbed_openfoam_newest)
+  set(FLUIDBED_OPENFOAM_SOURCE "${fluidbed_openfoam_newest}" CACHE PATH
+      "OpenFOAM source tree with lnInclude folders (scripts/install_openfoam.sh)")
 endif()
-set(FLUIDBED_OPENFOAM_SOURCE "${fluidbed_openfoam_newest}" CACHE PATH
-    "OpenFOAM source tree with lnInclude folders (scripts/install_openfoam.sh)")
 
 find_library(FLUIDBED_LIB_OPENFOAM OpenFOAM)
 find_library(FLUIDBED_LIB_FINITE_VOLUME finiteVolume)
