@@ -11,13 +11,16 @@ particle velocity is not). With a tolerance, exits 1 when the difference exceeds
 Python 3 standard library only.
 """
 
+import gzip
 import re
 import sys
 from pathlib import Path
 
 
 def internal_values(path):
-    text = Path(path).read_text()
+    """The internal values of the field file `path`, or of `path`.gz (writeCompression on)."""
+    path = Path(path)
+    text = path.read_text() if path.exists() else gzip.decompress(Path(f"{path}.gz").read_bytes()).decode()
     start = text.index("internalField")
     uniform = re.match(r"internalField\s+uniform\s+(\([^)]*\)|\S+?);", text[start:])
     if uniform:
