@@ -1,21 +1,26 @@
 #!/usr/bin/env python3
 """Largest differences between the cell values of OpenFOAM fields in two time folders.
 
-Usage: compare_fields.py DIR_A DIR_B FIELD[:TOLERANCE] ...
+Usage: compare_fields.py DIR_A DIR_B FIELD[*WEIGHT][:TOLERANCE] ...
 
 For each field (an ASCII volScalarField or volVectorField file present in both folders) prints
 the largest absolute difference of its internal values (all vector components together) and the
-largest absolute value in DIR_A. With a tolerance, exits 1 when the difference exceeds it.
+largest absolute value in DIR_A. FIELD*WEIGHT compares the field times a scalar field, each run's
+own (e.g. U.particles*alpha.particles, the particle volume flux, which is defined where the
+particle velocity is not). With a tolerance, exits 1 when the difference exceeds it.
 Python 3 standard library only.
 """
 
+import gzip
 import re
 import sys
 from pathlib import Path
 
 
 def internal_values(path):
-    text = Path(path).read_text()
+    """The internal values of the field file `path`, or of `path`.gz (writeCompression on)."""
+    path = Path(path)
+    text = path.read_text() if path.exists() else gzip.decompress(Path(f"{path}.gz").read_bytes()).decode()
     start = text.index("internalField")
     uniform = re.match(r"internalField\s+uniform\s+(\([^)]*\)|\S+?);", text[start:])
     if uniform:
@@ -27,13 +32,22 @@ def internal_values(path):
     return [float(x) for vector in re.findall(r"\(([^()]*)\)", body)[:count] for x in vector.split()]
 
 
+def weighted(values, weights):
+    per_cell = len(values) // len(weights)
+    return [x * weights[i // per_cell] for i, x in enumerate(values)]
+
+
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
     failed = False
     for spec in argv[3:]:
         name, _, tolerance = spec.partition(":")
-        a, b = internal_values(Path(argv[1]) / name), internal_values(Path(argv[2]) / name)
+        field, _, weight = name.partition("*")
+        a, b = (internal_values(Path(folder) / field) for folder in argv[1:3])
+        if weight:
+            a, b = (weighted(values, internal_values(Path(folder) / weight))
+                    for values, folder in ((a, argv[1]), (b, argv[2])))
         if len(a) != len(b):
             sys.exit(f"{name}: {len(a)} values against {len(b)}")
         difference = max(abs(x - y) for x, y in zip(a, b))

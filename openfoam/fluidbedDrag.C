@@ -2,6 +2,8 @@
 #include "phasePair.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <cmath>
+
 namespace Foam
 {
 namespace dragModels
@@ -20,8 +22,9 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
 )
 :
     dragModel(pair, registerObject),
-    compareMinAlpha_(1e-4),
-    comparedTimeIndex_(-1)
+    report_(dict.lookupOrDefault<Switch>("report", false)),
+    compareMinAlpha_(pair.dispersed().residualAlpha().value()),
+    checkedTimeIndex_(-1)
 {
     const word name(dict.get<word>("law"));
     char message[1024];
@@ -54,19 +57,52 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
 }
 
 
-void Foam::dragModels::fluidbedDrag::compare(const volScalarField& K) const
+void Foam::dragModels::fluidbedDrag::check(const volScalarField& K) const
 {
     const label timeIndex = K.mesh().time().timeIndex();
-    if (timeIndex == comparedTimeIndex_)
+    if (timeIndex == checkedTimeIndex_)
     {
         return;
     }
-    comparedTimeIndex_ = timeIndex;
+    checkedTimeIndex_ = timeIndex;
+
+    const scalarField& alpha = pair_.dispersed().primitiveField();
+    if (report_)
+    {
+        const tmp<volScalarField> tslip(pair_.magUr());
+        const scalarField& slip = tslip().primitiveField();
+        label notFinite = 0;
+        label zeroSlip = 0;
+        label empty = 0;
+        forAll(K, celli)
+        {
+            notFinite += !std::isfinite(K[celli]);
+            zeroSlip += slip[celli] == 0;
+            empty += alpha[celli] <= 0;
+        }
+        reduce(notFinite, sumOp<label>());
+        reduce(zeroSlip, sumOp<label>());
+        reduce(empty, sumOp<label>());
+        Info<< "fluidbed: K of " << fluidbed_drag_law_name(law_.get())
+            << " over " << returnReduce(K.size(), sumOp<label>())
+            << " cells: " << notFinite << " not finite, " << zeroSlip
+            << " at zero slip, " << empty << " without particles, range "
+            << gMin(K.primitiveField()) << " to " << gMax(K.primitiveField())
+            << endl;
+    }
+    if (!reference_.valid())
+    {
+        return;
+    }
 
     const tmp<volScalarField> tKref(reference_->K());
     const scalarField& Kref = tKref().primitiveField();
-    const scalarField& alpha = pair_.dispersed().primitiveField();
+    // fluidbed's Reynolds number, rho alpha_c |Ur| d/mu (the one at which
+    // OpenFOAM's GidaspowSchillerNaumann switches to its Newton branch)
+    const tmp<volScalarField> tRe(pair_.continuous()*pair_.Re());
+    const scalarField& Re = tRe().primitiveField();
     scalar maxRelative = 0;
+    scalar maxRe = 0;
     label compared = 0;
     forAll(Kref, celli)
     {
@@ -77,22 +113,27 @@ void Foam::dragModels::fluidbedDrag::compare(const volScalarField& K) const
                 maxRelative,
                 mag(K[celli] - Kref[celli])/mag(Kref[celli])
             );
+            maxRe = max(maxRe, Re[celli]);
             ++compared;
         }
     }
     reduce(maxRelative, maxOp<scalar>());
+    reduce(maxRe, maxOp<scalar>());
+    const label excluded =
+        returnReduce(Kref.size() - compared, sumOp<label>());
     reduce(compared, sumOp<label>());
     Info<< "fluidbed: K of " << fluidbed_drag_law_name(law_.get())
         << " against " << reference_->type() << ": max relative difference "
         << maxRelative << " over " << compared << " cells with alpha >= "
-        << compareMinAlpha_ << endl;
+        << compareMinAlpha_ << " (" << excluded << " excluded), max Re "
+        << maxRe << endl;
 }
 
 
 void Foam::dragModels::fluidbedDrag::evaluate
 (
     label n,
-    const scalar* voidage,
+    const scalar* phi,
     const scalar* slip,
     const scalar* rho,
     const scalar* mu,
@@ -104,7 +145,7 @@ void Foam::dragModels::fluidbedDrag::evaluate
     const size_t size = static_cast<size_t>(n);
     const size_t bad = fluidbed_drag_law_pressure_gradient_beta
     (
-        law_.get(), size, voidage, slip, rho, mu, d, beta,
+        law_.get(), size, phi, slip, rho, mu, d, beta,
         message, sizeof message
     );
     if (bad != size)
@@ -119,13 +160,13 @@ void Foam::dragModels::fluidbedDrag::evaluate
 
 Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
 (
-    const scalar maxVoidage
+    const scalar minPhi
 ) const
 {
     const fvMesh& mesh = pair_.phase1().mesh();
 
-    volScalarField voidage("fluidbed:voidage", pair_.continuous());
-    voidage.min(dimensionedScalar("maxVoidage", dimless, maxVoidage));
+    volScalarField phi("fluidbed:phi", pair_.dispersed());
+    phi.max(dimensionedScalar("minPhi", dimless, minPhi));
     const tmp<volScalarField> tslip(pair_.magUr());
     const volScalarField& rho = pair_.continuous().rho();
     const tmp<volScalarField> tmu(pair_.continuous().mu());
@@ -153,7 +194,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
     evaluate
     (
         mesh.nCells(),
-        voidage.primitiveField().cdata(),
+        phi.primitiveField().cdata(),
         tslip().primitiveField().cdata(),
         rho.primitiveField().cdata(),
         tmu().primitiveField().cdata(),
@@ -167,7 +208,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
         evaluate
         (
             betab[patchi].size(),
-            voidage.boundaryField()[patchi].cdata(),
+            phi.boundaryField()[patchi].cdata(),
             tslip().boundaryField()[patchi].cdata(),
             rho.boundaryField()[patchi].cdata(),
             tmu().boundaryField()[patchi].cdata(),
@@ -182,10 +223,10 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
 
 Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
 {
-    tmp<volScalarField> tK(beta(1));
-    if (reference_.valid())
+    tmp<volScalarField> tK(beta(0));
+    if (report_ || reference_.valid())
     {
-        compare(tK());
+        check(tK());
     }
     return tK;
 }
@@ -197,9 +238,8 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::Ki() const
     // its limit is taken at the dispersed fraction residualAlpha, so that the
     // face coefficient Kf (interpolated Ki times the face fraction) keeps the
     // finite per-particle drag of those cells instead of 0.
-    const scalar residual = pair_.dispersed().residualAlpha().value();
     return
-        beta(1 - residual)
+        beta(pair_.dispersed().residualAlpha().value())
        /max(pair_.dispersed(), pair_.dispersed().residualAlpha());
 }
 

@@ -25,11 +25,15 @@ const char* fluidbed_drag_law_name(const fluidbed_drag_law* law);
 
 /* beta[i] [kg m^-3 s^-1] for a momentum equation whose buoyancy is -phi grad p (OpenFOAM's
  * two-fluid solvers), per unit volume of suspension, for the n states
- * (voidage[i] in (0, 1], interstitial slip[i] = |u_f - v_p| >= 0, fluid density[i], fluid dynamic
- * viscosity[i], particle diameter[i]), each validated by the law's checked entry point.
+ * (particle_fraction[i] = phi in [0, 1), interstitial slip[i] = |u_f - v_p| >= 0, fluid density[i],
+ * fluid dynamic viscosity[i], particle diameter[i]), each validated by the law's checked entry point.
+ * The particle fraction is passed, not the voidage: where phi is small (below 1/16) the law is
+ * evaluated in long double with the voidage 1 - phi formed there, so that the phi it forms back
+ * carries the particle fraction's double digits (in double, 1 - (1 - phi) loses them).
  * Returns n when every state is valid, else the index of the first invalid one, with `message`
  * naming the offending argument and value; beta is then written only below that index. */
-size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_law* law, size_t n, const double* voidage,
+size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_law* law, size_t n,
+                                                const double* particle_fraction,
                                                 const double* slip, const double* fluid_density,
                                                 const double* fluid_viscosity, const double* diameter, double* beta,
                                                 char* message, size_t message_size);

@@ -11,7 +11,8 @@
 # COMPARE_WITH: an OpenFOAM drag type the plugin also evaluates each step, logging the largest
 # relative difference of K (the plugin's compareWith check).
 # The plugin is FLUIDBED_OPENFOAM_LIB (default build/openfoam/libfluidbedOpenFOAM.so).
-# FLUIDBED_CASE_SETUP, if set, is a command run in the case folder before blockMesh (e.g. to select
+# FLUIDBED_CASE_SETUP: a shell command run in the case folder once it is set up, before blockMesh
+# (the tests use it to change initial fields, solver tolerances, the drag dictionary or the
 # kinetic-theory sub-models).
 set -euo pipefail
 [ $# -ge 3 ] || { sed -n '2,16p' "$0"; exit 2; }
@@ -41,7 +42,7 @@ else:
     if compare:
         body += (f'        compareWith\n        {{\n            type            {compare};\n'
                  '            residualRe      1e-3;\n            swarmCorrection { type none; }\n'
-                 '            minAlpha        1e-4;\n        }\n')
+                 '        }\n')
     control = open('system/controlDict').read()
     control = re.sub(r'^(application .*\n)', rf'\1libs            ("{lib}");\n', control, count=1, flags=re.M)
     open('system/controlDict', 'w').write(control)

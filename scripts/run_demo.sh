@@ -17,6 +17,8 @@
 #   quadrature_vs_size_distribution  2-, 3-, 4-node quadratures of a log-normal and a sieve PSD
 #   seed003_tables_1_2               seed 003 Tables 1–2: moments and published quadratures, and
 #                                    the band of rules the printed digits allow
+# and the OpenFOAM demonstration (scripts/run_openfoam_demo.sh): OpenFOAM's fluidisedBed tutorial
+# with four drag laws through the plugin, pressure drop and bed height against time.
 # The plots (PNG, with their gnuplot scripts and data) are written to build/release/plots and
 # listed at the end. Each script redraws its PNG from any directory (gnuplot /path/to/x.gp);
 # the demo checks that on a copy of the directory.
@@ -37,6 +39,10 @@ for example in "${examples[@]}"; do
   echo "==== $example"
   ./build/release/examples/"$example" "$plots" || failed+=("$example")
 done
+
+echo
+echo "==== OpenFOAM: the fluidisedBed tutorial with four drag laws"
+bash scripts/run_openfoam_demo.sh build/release "$plots" || failed+=("OpenFOAM demonstration")
 
 # Every script must redraw its picture beside itself when run from elsewhere (here /, on a copy
 # of the directory whose PNGs were removed), without a gnuplot warning.
