@@ -78,14 +78,14 @@ data = here . '{name}.dat'
 set encoding utf8
 set terminal pngcairo size 900,900 noenhanced font ',11'
 set output here . '{name}.png'
-set multiplot layout 2,1
+set multiplot layout 2,1 title "OpenFOAM v1912 fluidisedBed tutorial (twoPhaseEulerFoam, 30 x 200 cells, air at 0.25 m/s)\\nwith four fluidbed drag laws, K = the law's pressure-gradient beta"
 set xlabel 'time [s]'
 set grid
 set key bottom right
-set ylabel 'pressure drop / bed weight'
+set ylabel 'p(bottom row) - p(top row) over particle weight per area [-]'
 plot {plots(2)}
 set ylabel 'bed height, 95 % of particles below [m]'
-set key top right
+set key top left
 plot {plots(3)}
 unset multiplot
 """)
