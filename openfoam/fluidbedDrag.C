@@ -1,4 +1,5 @@
 #include "fluidbedDrag.H"
+#include "fluidbedLawParameters.H"
 #include "phasePair.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -34,6 +35,10 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
         FatalIOErrorInFunction(dict)
             << message << exit(FatalIOError);
     }
+    setFluidbedLawParameters
+    (
+        dict, wordList({"type", "report"}), law_.get(), fluidbed_drag_law_set
+    );
     Info<< "fluidbed drag law " << fluidbed_drag_law_name(law_.get())
         << " for " << pair.name() << endl;
 

@@ -1,4 +1,5 @@
 #include "fluidbedKineticTheory.H"
+#include "fluidbedLawParameters.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvcGrad.H"
 
@@ -156,20 +157,7 @@ Foam::kineticTheoryModels::fluidbedLaw::fluidbedLaw
     {
         FatalIOErrorInFunction(dict) << message << exit(FatalIOError);
     }
-    // Every other scalar entry is a parameter of the law.
-    forAllConstIters(dict, iter)
-    {
-        const entry& e = *iter;
-        if (e.isDict() || e.keyword() == "law" || ownKeys.found(e.keyword()))
-        {
-            continue;
-        }
-        const scalar value = dict.get<scalar>(e.keyword());
-        if (!fluidbed_kt_law_set(law_.get(), e.keyword().c_str(), value, message, sizeof message))
-        {
-            FatalIOErrorInFunction(dict) << message << exit(FatalIOError);
-        }
-    }
+    setFluidbedLawParameters(dict, ownKeys, law_.get(), fluidbed_kt_law_set);
     Info<< "fluidbed kinetic-theory law " << this->name() << endl;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <string>
 #include <string_view>
 
 namespace fluidbed::openfoam {
@@ -15,6 +16,13 @@ inline void write_message(std::string_view text, char* message, std::size_t mess
   const std::size_t n = std::min(text.size(), message_size - 1);
   std::memcpy(message, text.data(), n);
   message[n] = '\0';
+}
+
+// The message for a dictionary entry `key` that is not a parameter of the law `law`, listing the
+// parameters it has (`known`, comma-separated; empty: none).
+inline std::string unknown_parameter(std::string_view law, std::string_view key, std::string_view known) {
+  return "fluidbed: " + std::string(law) + " has no parameter '" + std::string(key) +
+         "'; its parameters: " + (known.empty() ? std::string("none") : std::string(known));
 }
 
 }  // namespace fluidbed::openfoam

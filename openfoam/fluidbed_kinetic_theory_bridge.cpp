@@ -184,10 +184,8 @@ extern "C" int fluidbed_kt_law_set(fluidbed_kt_law* law, const char* key, double
               std::string known;
               for (const ParameterKey& k : parameter_keys)
                 if (parameter(l, k.key) != nullptr) known += (known.empty() ? "" : ", ") + std::string(k.key);
-              fluidbed::openfoam::write_message("fluidbed: " + std::string(l.name()) + " has no parameter '" +
-                                                    std::string(key) + "'; its parameters: " +
-                                                    (known.empty() ? std::string("none") : known),
-                                                message, message_size);
+              fluidbed::openfoam::write_message(fluidbed::openfoam::unknown_parameter(l.name(), key, known), message,
+                                                message_size);
               return 0;
             },
             v);
