@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <limits>
 #include <span>
 #include <variant>
 
@@ -70,6 +71,28 @@ TEST_CASE_TEMPLATE("out of domain: every drag law, value and derivatives, by typ
     CHECK(std::isfinite(
         drag::evaluate_with_derivatives(any, clear, fluidbed::checked).force_slip_derivative(drag::Buoyancy::pressure_gradient)));
   }
+}
+
+TEST_CASE_TEMPLATE("out of domain: a drag law's parameters (Syamlal-O'Brien c1 > 0 and d1, the constant exponent)", T,
+                   FLUIDBED_SCALAR_TYPES) {
+  const drag::DragState<T> s{T(0.5), T(0.1), {T(1.25), T(1.8e-5)}, T(1e-4)};
+  CHECK_THROWS_WITH_AS(drag::SyamlalOBrien(-1.0, 2.65).checked(s),
+                       "fluidbed::SyamlalOBrien: argument 'c1' = -1 is out of domain (must be finite and > 0)",
+                       std::domain_error);
+  CHECK_THROWS_WITH_AS(drag::SyamlalOBrien(0.0, 2.65).checked_with_derivatives(s), doctest::Contains("argument 'c1' = 0"),
+                       std::domain_error);
+  CHECK_THROWS_WITH_AS(drag::SyamlalOBrien(0.8, std::numeric_limits<double>::quiet_NaN()).checked(s),
+                       doctest::Contains("argument 'd1' = nan"), std::domain_error);
+  CHECK_THROWS_WITH_AS(drag::ConstantExponentDrag(std::numeric_limits<double>::infinity(), "MyExponentLaw", "").checked(s),
+                       doctest::Contains("argument 'exponent' = inf"), std::domain_error);
+  CHECK_NOTHROW(drag::SyamlalOBrien(0.8, 2.65).checked(s));
+  CHECK_NOTHROW(drag::ConstantExponentDrag(-1.0, "MyExponentLaw", "").checked(s));
+  // The state is checked first, then the parameters; the run-time family checks them alike.
+  const drag::DragState<T> bad_state{T(0.5), T(-0.1), {T(1.25), T(1.8e-5)}, T(1e-4)};
+  CHECK_THROWS_WITH_AS(drag::SyamlalOBrien(-1.0, 2.65).checked(bad_state), doctest::Contains("argument 'slip'"),
+                       std::domain_error);
+  const drag::AnyDragLaw any = drag::SyamlalOBrien(-1.0, 2.65);
+  CHECK_THROWS_WITH_AS(drag::evaluate(any, s, fluidbed::checked), doctest::Contains("argument 'c1'"), std::domain_error);
 }
 
 TEST_CASE_TEMPLATE("out of domain: Beetstra polydisperse species of a two-species mixture", T, FLUIDBED_SCALAR_TYPES) {

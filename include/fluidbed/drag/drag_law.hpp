@@ -142,10 +142,11 @@ FLUIDBED_HOST_DEVICE constexpr Arguments<T, 5> domain(const DragState<T>& s) {
            {"diameter", s.diameter, domains::positive<T>()}}};
 }
 
-// Validates a state for the checked entry points; `function` names the caller.
-template <class T>
-void validate(std::string_view function, const DragState<T>& s) {
-  require_within(function, domain(s));
+// Validates a state, then the law's parameters where it has any (parameter_domain), for the
+// checked entry points; `function` names the caller.
+template <class T, class Law>
+void validate(std::string_view function, const DragState<T>& s, const Law& law) {
+  require_within(function, join(domain(s), parameter_domain_of<T>(law)));
 }
 
 namespace detail {
@@ -208,11 +209,11 @@ void validate_result(std::string_view function, const DragState<T>& s, const Dra
 template <class Law>
 struct DragLaw {
   // Hot path. Preconditions (asserted in debug builds): ε ∈ (0, 1], w >= 0, ρ_f, μ_f, d > 0,
-  // all finite. Result finite and >= 0 (> 0 for ε < 1) wherever β is representable in T;
+  // all finite, and the law's parameters in their domain (its parameter_domain, if it has one). Result finite and >= 0 (> 0 for ε < 1) wherever β is representable in T;
   // beyond (μ_f/d² or ε^−n overflowing) +∞, or NaN where ∞ meets an exact 0: `checked` reports it.
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr DragCoefficient<T> operator()(const DragState<T>& s) const {
-    FLUIDBED_EXPECTS(within(domain(s)));
+    FLUIDBED_EXPECTS(within(join(domain(s), parameter_domain_of<T>(self()))));
     return DragCoefficient<T>(Law::native_buoyancy, self().native_beta(s.voidage, s.slip, s.fluid, s.diameter),
                               s.voidage);
   }
@@ -220,7 +221,7 @@ struct DragLaw {
   // Hot path with ∂β/∂ε and ∂β/∂w (same preconditions).
   template <class T>
   FLUIDBED_HOST_DEVICE constexpr DragCoefficientWithDerivatives<T> with_derivatives(const DragState<T>& s) const {
-    FLUIDBED_EXPECTS(within(domain(s)));
+    FLUIDBED_EXPECTS(within(join(domain(s), parameter_domain_of<T>(self()))));
     using D = Dual<T, 2>;
     const D beta = self().native_beta(D::variable(s.voidage, 0), D::variable(s.slip, 1), s.fluid, s.diameter);
     return DragCoefficientWithDerivatives<T>(Law::native_buoyancy,
@@ -235,7 +236,7 @@ struct DragLaw {
   // a status, never ∞ or NaN.
   template <class T>
   DragCoefficient<T> checked(const DragState<T>& s) const {
-    validate(self().name(), s);
+    validate(self().name(), s, self());
     const DragCoefficient<T> beta = (*this)(s);
     detail::validate_result(self().name(), beta, [&s] { return detail::describe_state(s); });
     return beta;
@@ -245,7 +246,7 @@ struct DragLaw {
   // must be finite too (∂β/∂w may be the documented +∞ at w = 0).
   template <class T>
   DragCoefficientWithDerivatives<T> checked_with_derivatives(const DragState<T>& s) const {
-    validate(self().name(), s);
+    validate(self().name(), s, self());
     const DragCoefficientWithDerivatives<T> beta = with_derivatives(s);
     detail::validate_result(self().name(), s, beta);
     return beta;

@@ -61,6 +61,12 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
 
   constexpr double c1() const { return c1_; }
   constexpr double d1() const { return d1_; }
+  // B = c1 ε^1.28 must be > 0: the root of V_r is real for B >= 0, and V_r > 0 for B > 0
+  // (V_r = 0, β = ∞, for B = 0 once 0.06 Re_s > A). d1 may be any finite number.
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr Arguments<T, 2> parameter_domain() const {
+    return {{{"c1", T(c1_), domains::positive<T>()}, {"d1", T(d1_), domains::finite<T>()}}};
+  }
   constexpr std::string_view name() const { return "SyamlalOBrien"; }
   constexpr std::string_view reference() const {
     return "Syamlal, M., O'Brien, T.J. (1989) AIChE Symp. Ser. 85(270), 22-31; Syamlal, M., Rogers, W., "

@@ -61,6 +61,11 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
   }
 
   constexpr double exponent() const { return exponent_; }
+  // The exponent may be any finite number (ε^−n is finite for every finite n and ε in (0, 1]).
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1> parameter_domain() const {
+    return {{{"exponent", T(exponent_), domains::finite<T>()}}};
+  }
   constexpr std::string_view name() const { return name_; }
   constexpr std::string_view reference() const { return reference_; }
   constexpr ValidityRange validity() const { return {0.8, 1.0, 0.0, 1.0e5}; }
