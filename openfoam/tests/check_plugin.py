@@ -134,10 +134,13 @@ PARAMETER_PAIRS = [
     ("SyamlalOBrien", "c1 0.8; d1 2.65;", "SyamlalOBrien"),
 ]
 UNEQUAL = 1e-2
-# An entry that is not a parameter of the law stops the solver with the law's parameters.
-UNKNOWN = [
+# An entry that is not a parameter of the law stops the solver with the law's parameters; a
+# parameter outside its domain stops it with the library's checked message naming it.
+REJECTED = [
     ("SyamlalOBrien", "exponent 2.65;", "fluidbed: SyamlalOBrien has no parameter 'exponent'; its parameters: c1, d1"),
     ("Ergun", "c1 0.8;", "fluidbed: Ergun has no parameter 'c1'; its parameters: none"),
+    ("SyamlalOBrien", "c1 -1;",
+     "fluidbed::SyamlalOBrien: argument 'c1' = -1 is out of domain (must be finite and > 0)"),
 ]
 
 
@@ -151,8 +154,8 @@ def parameters(work):
         ok = float(lines[0][2]) > UNEQUAL
         failures += not ok
         print(f"{title}: {float(lines[0][2]):.3g} (more than {UNEQUAL:g} required) {'ok' if ok else 'FAILS'}")
-    for law, given, expected in UNKNOWN:
-        case = work / f"{law}_unknown"
+    for index, (law, given, expected) in enumerate(REJECTED):
+        case = work / f"rejected_{index}_{law}"
         try:
             run_case(case, law, 1, setup=with_parameters(given))
             stopped = False
