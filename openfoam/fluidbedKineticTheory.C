@@ -138,6 +138,51 @@ const dictionary& compareDict(const dictionary& coeffs)
     return coeffs.subDict("compareWith");
 }
 
+// The bridge of a transport coefficient (nu, kappa): a law of
+// (phi, Theta, g0, d, rho_s, e).
+typedef size_t (*TransportBridge)
+(
+    const fluidbed_kt_law*, size_t, const double*, const double*,
+    const double*, const double*, const double*, double, double*, char*,
+    size_t
+);
+
+// A transport coefficient evaluated by `bridge` over every part of the mesh.
+tmp<volScalarField> transportCoefficient
+(
+    const kineticTheoryModels::fluidbedLaw& law,
+    const TransportBridge bridge,
+    const word& name,
+    const dimensionSet& dimensions,
+    const volScalarField& alpha1,
+    const volScalarField& Theta,
+    const volScalarField& g0,
+    const volScalarField& rho1,
+    const volScalarField& da,
+    const dimensionedScalar& e
+)
+{
+    const fvMesh& mesh = alpha1.mesh();
+    const tmp<volScalarField> tphi(solidFraction(alpha1));
+    tmp<volScalarField> tresult(newField(name, mesh, dimensions));
+    forEachPart(mesh, [&](const label part)
+    {
+        char message[1024];
+        const label n = partSize(mesh, part);
+        law.check
+        (
+            bridge
+            (
+                law.get(), n, in(tphi(), part), in(Theta, part),
+                in(g0, part), in(da, part), in(rho1, part), e.value(),
+                out(tresult.ref(), part), message, sizeof message
+            ),
+            n, message
+        );
+    });
+    return tresult;
+}
+
 } // End anonymous namespace
 
 
@@ -476,24 +521,14 @@ Foam::kineticTheoryModels::viscosityModels::fluidbedViscosity::nu
     const dimensionedScalar& e
 ) const
 {
-    const fvMesh& mesh = alpha1.mesh();
-    const tmp<volScalarField> tphi(solidFraction(alpha1));
-    tmp<volScalarField> tnu(newField("nu", mesh, dimViscosity));
-    forEachPart(mesh, [&](const label part)
-    {
-        char message[1024];
-        const label n = partSize(mesh, part);
-        law_.check
+    tmp<volScalarField> tnu
+    (
+        transportCoefficient
         (
-            fluidbed_kt_shear_viscosity
-            (
-                law_.get(), n, in(tphi(), part), in(Theta, part),
-                in(g0, part), in(da, part), in(rho1, part), e.value(),
-                out(tnu.ref(), part), message, sizeof message
-            ),
-            n, message
-        );
-    });
+            law_, fluidbed_kt_shear_viscosity, "nu", dimViscosity,
+            alpha1, Theta, g0, rho1, da, e
+        )
+    );
     if (reference_.valid())
     {
         comparison_->report
@@ -534,27 +569,14 @@ Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::kappa
     const dimensionedScalar& e
 ) const
 {
-    const fvMesh& mesh = alpha1.mesh();
-    const tmp<volScalarField> tphi(solidFraction(alpha1));
     tmp<volScalarField> tkappa
     (
-        newField("kappa", mesh, dimensionSet(1, -1, -1, 0, 0))
-    );
-    forEachPart(mesh, [&](const label part)
-    {
-        char message[1024];
-        const label n = partSize(mesh, part);
-        law_.check
+        transportCoefficient
         (
-            fluidbed_kt_conductivity
-            (
-                law_.get(), n, in(tphi(), part), in(Theta, part),
-                in(g0, part), in(da, part), in(rho1, part), e.value(),
-                out(tkappa.ref(), part), message, sizeof message
-            ),
-            n, message
-        );
-    });
+            law_, fluidbed_kt_conductivity, "kappa",
+            dimensionSet(1, -1, -1, 0, 0), alpha1, Theta, g0, rho1, da, e
+        )
+    );
     if (reference_.valid())
     {
         comparison_->report
