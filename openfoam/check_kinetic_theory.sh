@@ -8,9 +8,10 @@
 #
 #   openfoam/check_kinetic_theory.sh [WORK_DIR] [STEPS]
 #
-# The drag is OpenFOAM's GidaspowErgunWenYu (the tutorial's): its residualAlpha floor keeps the
-# granular-temperature equation's diagonal nonzero in cells without particles, which Syamlal's
-# conductivity (0 at alpha = 0) needs (docs/openfoam.md).
+# The drag is fluidbed's GidaspowSwitched (the formula of the tutorial's GidaspowErgunWenYu) with
+# minParticleFraction 1e-6 (the tutorial's residualAlpha): a drag sink in the cells without
+# particles keeps the granular-temperature equation's diagonal nonzero there, which Syamlal's
+# viscosity and conductivity (0 at alpha = 0) need (docs/openfoam.md).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-$root/build/openfoam/check_kinetic_theory} steps=${2:-5}
@@ -23,8 +24,10 @@ mkdir -p "$work"
 status=0
 for config in gidaspow syamlal hrenya fluidbed-only; do
   echo "== $config"
-  if ! FLUIDBED_OPENFOAM_LIB=$lib FLUIDBED_CASE_SETUP="python3 $root/openfoam/kinetic_theory_case.py setup $config $lib" \
-       "$root/openfoam/run_case.sh" "$work/$config" openfoam:GidaspowErgunWenYu "$steps" > "$work/$config.out" 2>&1; then
+  setup="python3 $root/openfoam/kinetic_theory_case.py setup $config $lib && \
+sed -i -E 's/^( *law .*)$/\1\n        minParticleFraction 1e-6;/' constant/phaseProperties"
+  if ! FLUIDBED_OPENFOAM_LIB=$lib FLUIDBED_CASE_SETUP="$setup" \
+       "$root/openfoam/run_case.sh" "$work/$config" GidaspowSwitched "$steps" > "$work/$config.out" 2>&1; then
     echo "the run failed: $work/$config/log.twoPhaseEulerFoam"
     status=1
     continue

@@ -24,6 +24,7 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
 :
     dragModel(pair, registerObject),
     report_(dict.lookupOrDefault<Switch>("report", false)),
+    minParticleFraction_(dict.lookupOrDefault<scalar>("minParticleFraction", 0)),
     compareMinAlpha_(pair.dispersed().residualAlpha().value()),
     checkedTimeIndex_(-1)
 {
@@ -35,9 +36,18 @@ Foam::dragModels::fluidbedDrag::fluidbedDrag
         FatalIOErrorInFunction(dict)
             << message << exit(FatalIOError);
     }
+    if (!(minParticleFraction_ >= 0 && minParticleFraction_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "minParticleFraction " << minParticleFraction_
+            << " is not in [0, 1)" << exit(FatalIOError);
+    }
     setFluidbedLawParameters
     (
-        dict, wordList({"type", "report"}), law_.get(), fluidbed_drag_law_set
+        dict,
+        wordList({"type", "report", "minParticleFraction"}),
+        law_.get(),
+        fluidbed_drag_law_set
     );
     Info<< "fluidbed drag law " << fluidbed_drag_law_name(law_.get())
         << " for " << pair.name() << endl;
@@ -228,7 +238,7 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
 
 Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::K() const
 {
-    tmp<volScalarField> tK(beta(0));
+    tmp<volScalarField> tK(beta(minParticleFraction_));
     if (report_ || reference_.valid())
     {
         check(tK());
@@ -243,8 +253,9 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::Ki() const
     // its limit is taken at the dispersed fraction residualAlpha, so that the
     // face coefficient Kf (interpolated Ki times the face fraction) keeps the
     // finite per-particle drag of those cells instead of 0.
+    const scalar residualAlpha = pair_.dispersed().residualAlpha().value();
     return
-        beta(pair_.dispersed().residualAlpha().value())
+        beta(max(residualAlpha, minParticleFraction_))
        /max(pair_.dispersed(), pair_.dispersed().residualAlpha());
 }
 
