@@ -37,27 +37,37 @@ def weighted(values, weights):
     return [x * weights[i // per_cell] for i, x in enumerate(values)]
 
 
+def differences(folder_a, folder_b, name):
+    """Cell-by-cell |a - b| of field `name` (FIELD or FIELD*WEIGHT) between two time folders, and the
+    values in folder_a."""
+    field, _, weight = name.partition("*")
+    a, b = (internal_values(Path(folder) / field) for folder in (folder_a, folder_b))
+    if weight:
+        a, b = (weighted(values, internal_values(Path(folder) / weight))
+                for values, folder in ((a, folder_a), (b, folder_b)))
+    if len(a) != len(b):
+        sys.exit(f"{name}: {len(a)} values against {len(b)}")
+    return [abs(x - y) for x, y in zip(a, b)], a
+
+
+def root_mean_square(values):
+    return (sum(v * v for v in values) / len(values)) ** 0.5
+
+
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
     failed = False
     for spec in argv[3:]:
         name, _, tolerance = spec.partition(":")
-        field, _, weight = name.partition("*")
-        a, b = (internal_values(Path(folder) / field) for folder in argv[1:3])
-        if weight:
-            a, b = (weighted(values, internal_values(Path(folder) / weight))
-                    for values, folder in ((a, argv[1]), (b, argv[2])))
-        if len(a) != len(b):
-            sys.exit(f"{name}: {len(a)} values against {len(b)}")
-        difference = max(abs(x - y) for x, y in zip(a, b))
+        cell_differences, a = differences(argv[1], argv[2], name)
+        difference = max(cell_differences)
         verdict = ""
         if tolerance:
             failed |= difference > float(tolerance)
             verdict = " FAILS" if difference > float(tolerance) else " ok"
         print(f"{name}: max |difference| {difference:.3e}, max |value| {max(map(abs, a)):.3e}{verdict}")
     return 1 if failed else 0
-
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv))

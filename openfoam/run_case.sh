@@ -26,7 +26,7 @@ rm -rf "$case_dir"
 cp -r "$tutorial" "$case_dir"
 cd "$case_dir"
 find . -name '*.gz' -exec gunzip -f {} +
-end_time=$(python3 -c "print(repr($steps * 2e-4))")
+end_time=$(python3 -c "print('%.10g' % ($steps * 2e-4))")  # as OpenFOAM names the time folder
 sed -i -e "s/^endTime .*/endTime         $end_time;/" -e "s/^writeInterval .*/writeInterval   $end_time;/" \
        -e "s/^writePrecision .*/writePrecision  16;/" system/controlDict
 python3 - "$model" "$lib" "$compare" <<'PY'
