@@ -133,11 +133,6 @@ tmp<volScalarField> contraction(const volSymmTensorField& D)
     return dev(D) && dev(D);
 }
 
-const dictionary& compareDict(const dictionary& coeffs)
-{
-    return coeffs.subDict("compareWith");
-}
-
 // The bridge of a transport coefficient (nu, kappa): a law of
 // (phi, Theta, g0, d, rho_s, e).
 typedef size_t (*TransportBridge)
@@ -290,15 +285,9 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::fluidbedRadial
         (
             "slopeFloor", 1e-6
         )
-    )
-{
-    const dictionary& coeffs = dict.subDict("fluidbedRadialCoeffs");
-    if (coeffs.found("compareWith"))
-    {
-        reference_.reset(radialModel::New(compareDict(coeffs)).ptr());
-        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
-    }
-}
+    ),
+    reference_(dict.subDict("fluidbedRadialCoeffs"))
+{}
 
 
 Foam::tmp<Foam::volScalarField>
@@ -343,14 +332,14 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0
 ) const
 {
     tmp<volScalarField> tg0(evaluate(alpha, alphaMinFriction, alphaMax, false));
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "g0", law_.name(), reference_->type(), alpha, tg0(),
-            reference_->g0(alpha, alphaMinFriction, alphaMax)()
-        );
-    }
+    reference_.compare
+    (
+        "g0", law_.name(), alpha, tg0(),
+        [&](const radialModel& theirs)
+        {
+            return theirs.g0(alpha, alphaMinFriction, alphaMax);
+        }
+    );
     return tg0;
 }
 
@@ -367,14 +356,14 @@ Foam::kineticTheoryModels::radialModels::fluidbedRadial::g0prime
     (
         evaluate(alpha, alphaMinFriction, alphaMax, true)
     );
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "g0prime", law_.name(), reference_->type(), alpha, tg0prime(),
-            reference_->g0prime(alpha, alphaMinFriction, alphaMax)()
-        );
-    }
+    reference_.compare
+    (
+        "g0prime", law_.name(), alpha, tg0prime(),
+        [&](const radialModel& theirs)
+        {
+            return theirs.g0prime(alpha, alphaMinFriction, alphaMax);
+        }
+    );
     return tg0prime;
 }
 
@@ -389,15 +378,9 @@ fluidbedGranularPressure(const dictionary& dict)
     (
         dict.subDict("fluidbedGranularPressureCoeffs"),
         FLUIDBED_KT_GRANULAR_PRESSURE
-    )
-{
-    const dictionary& coeffs = dict.subDict("fluidbedGranularPressureCoeffs");
-    if (coeffs.found("compareWith"))
-    {
-        reference_.reset(granularPressureModel::New(compareDict(coeffs)).ptr());
-        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
-    }
-}
+    ),
+    reference_(dict.subDict("fluidbedGranularPressureCoeffs"))
+{}
 
 
 Foam::tmp<Foam::volScalarField>
@@ -453,14 +436,14 @@ granularPressureCoeff
 ) const
 {
     tmp<volScalarField> tcoeff(evaluate(alpha1, g0, nullptr, rho1, e));
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "granularPressureCoeff", law_.name(), reference_->type(), alpha1,
-            tcoeff(), reference_->granularPressureCoeff(alpha1, g0, rho1, e)()
-        );
-    }
+    reference_.compare
+    (
+        "granularPressureCoeff", law_.name(), alpha1, tcoeff(),
+        [&](const granularPressureModel& theirs)
+        {
+            return theirs.granularPressureCoeff(alpha1, g0, rho1, e);
+        }
+    );
     return tcoeff;
 }
 
@@ -477,18 +460,17 @@ granularPressureCoeffPrime
 ) const
 {
     tmp<volScalarField> tslope(evaluate(alpha1, g0, &g0prime, rho1, e));
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "granularPressureCoeffPrime", law_.name(), reference_->type(),
-            alpha1, tslope(),
-            reference_->granularPressureCoeffPrime
+    reference_.compare
+    (
+        "granularPressureCoeffPrime", law_.name(), alpha1, tslope(),
+        [&](const granularPressureModel& theirs)
+        {
+            return theirs.granularPressureCoeffPrime
             (
                 alpha1, g0, g0prime, rho1, e
-            )()
-        );
-    }
+            );
+        }
+    );
     return tslope;
 }
 
@@ -499,15 +481,9 @@ Foam::kineticTheoryModels::viscosityModels::fluidbedViscosity::
 fluidbedViscosity(const dictionary& dict)
 :
     viscosityModel(dict),
-    law_(dict.subDict("fluidbedViscosityCoeffs"), FLUIDBED_KT_SHEAR_VISCOSITY)
-{
-    const dictionary& coeffs = dict.subDict("fluidbedViscosityCoeffs");
-    if (coeffs.found("compareWith"))
-    {
-        reference_.reset(viscosityModel::New(compareDict(coeffs)).ptr());
-        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
-    }
-}
+    law_(dict.subDict("fluidbedViscosityCoeffs"), FLUIDBED_KT_SHEAR_VISCOSITY),
+    reference_(dict.subDict("fluidbedViscosityCoeffs"))
+{}
 
 
 Foam::tmp<Foam::volScalarField>
@@ -529,14 +505,14 @@ Foam::kineticTheoryModels::viscosityModels::fluidbedViscosity::nu
             alpha1, Theta, g0, rho1, da, e
         )
     );
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "nu", law_.name(), reference_->type(), alpha1, tnu(),
-            reference_->nu(alpha1, Theta, g0, rho1, da, e)()
-        );
-    }
+    reference_.compare
+    (
+        "nu", law_.name(), alpha1, tnu(),
+        [&](const viscosityModel& theirs)
+        {
+            return theirs.nu(alpha1, Theta, g0, rho1, da, e);
+        }
+    );
     return tnu;
 }
 
@@ -547,15 +523,9 @@ Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::
 fluidbedConductivity(const dictionary& dict)
 :
     conductivityModel(dict),
-    law_(dict.subDict("fluidbedConductivityCoeffs"), FLUIDBED_KT_CONDUCTIVITY)
-{
-    const dictionary& coeffs = dict.subDict("fluidbedConductivityCoeffs");
-    if (coeffs.found("compareWith"))
-    {
-        reference_.reset(conductivityModel::New(compareDict(coeffs)).ptr());
-        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
-    }
-}
+    law_(dict.subDict("fluidbedConductivityCoeffs"), FLUIDBED_KT_CONDUCTIVITY),
+    reference_(dict.subDict("fluidbedConductivityCoeffs"))
+{}
 
 
 Foam::tmp<Foam::volScalarField>
@@ -577,14 +547,14 @@ Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::kappa
             dimensionSet(1, -1, -1, 0, 0), alpha1, Theta, g0, rho1, da, e
         )
     );
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "kappa", law_.name(), reference_->type(), alpha1, tkappa(),
-            reference_->kappa(alpha1, Theta, g0, rho1, da, e)()
-        );
-    }
+    reference_.compare
+    (
+        "kappa", law_.name(), alpha1, tkappa(),
+        [&](const conductivityModel& theirs)
+        {
+            return theirs.kappa(alpha1, Theta, g0, rho1, da, e);
+        }
+    );
     return tkappa;
 }
 
@@ -594,7 +564,8 @@ Foam::kineticTheoryModels::conductivityModels::fluidbedConductivity::kappa
 Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::
 fluidbedFrictionalStress(const dictionary& dict)
 :
-    frictionalStressModel(dict)
+    frictionalStressModel(dict),
+    reference_(dict.subDict("fluidbedFrictionalStressCoeffs"))
 {
     const dictionary& coeffs = dict.subDict("fluidbedFrictionalStressCoeffs");
     if (coeffs.found("law"))
@@ -626,11 +597,6 @@ fluidbedFrictionalStress(const dictionary& dict)
             Info<< "fluidbed: no frictional viscosity law: nuFric is 0"
                 << endl;
         }
-    }
-    if (coeffs.found("compareWith"))
-    {
-        reference_.reset(frictionalStressModel::New(compareDict(coeffs)).ptr());
-        comparison_.reset(new fluidbedComparison(compareDict(coeffs)));
     }
 }
 
@@ -736,15 +702,14 @@ frictionalPressure
 ) const
 {
     tmp<volScalarField> tpf(pressure(phase, alphaMinFriction, alphaMax, false));
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "frictionalPressure", pressureName(), reference_->type(), phase,
-            tpf(),
-            reference_->frictionalPressure(phase, alphaMinFriction, alphaMax)()
-        );
-    }
+    reference_.compare
+    (
+        "frictionalPressure", pressureName(), phase, tpf(),
+        [&](const frictionalStressModel& theirs)
+        {
+            return theirs.frictionalPressure(phase, alphaMinFriction, alphaMax);
+        }
+    );
     return tpf;
 }
 
@@ -759,18 +724,17 @@ frictionalPressurePrime
 ) const
 {
     tmp<volScalarField> tslope(pressure(phase, alphaMinFriction, alphaMax, true));
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "frictionalPressurePrime", pressureName(), reference_->type(),
-            phase, tslope(),
-            reference_->frictionalPressurePrime
+    reference_.compare
+    (
+        "frictionalPressurePrime", pressureName(), phase, tslope(),
+        [&](const frictionalStressModel& theirs)
+        {
+            return theirs.frictionalPressurePrime
             (
                 phase, alphaMinFriction, alphaMax
-            )()
-        );
-    }
+            );
+        }
+    );
     return tslope;
 }
 
@@ -819,16 +783,17 @@ Foam::kineticTheoryModels::frictionalStressModels::fluidbedFrictionalStress::nu
         }
     }
     tmp<volScalarField> tnu(tmu/rho);
-    if (reference_.valid())
-    {
-        comparison_->report
-        (
-            "nuFric",
-            stress_.valid() ? stress_->name()
-          : viscosity_.valid() ? viscosity_->name() : "no viscosity law",
-            reference_->type(), phase, tnu(),
-            reference_->nu(phase, alphaMinFriction, alphaMax, pf, D)()
-        );
-    }
+    reference_.compare
+    (
+        "nuFric",
+        stress_.valid() ? stress_->name()
+      : viscosity_.valid() ? viscosity_->name() : "no viscosity law",
+        phase,
+        tnu(),
+        [&](const frictionalStressModel& theirs)
+        {
+            return theirs.nu(phase, alphaMinFriction, alphaMax, pf, D);
+        }
+    );
     return tnu;
 }
