@@ -10,7 +10,8 @@
 # NPROCS > 1: decomposePar (simple, along the height), mpirun, reconstructPar.
 # COMPARE_WITH: an OpenFOAM drag type the plugin also evaluates each step, logging the largest
 # relative difference of K (the plugin's compareWith check).
-# The plugin is FLUIDBED_OPENFOAM_LIB (default build/openfoam/libfluidbedOpenFOAM.so).
+# The plugin is FLUIDBED_OPENFOAM_LIB (default build/openfoam/libfluidbedOpenFOAM.so); a bare file
+# name is given to OpenFOAM as it is (found through LD_LIBRARY_PATH or the loader's cache).
 # FLUIDBED_CASE_SETUP: a shell command run in the case folder once it is set up, before blockMesh
 # (the tests use it to change initial fields, solver tolerances, the drag dictionary or the
 # kinetic-theory sub-models).
@@ -18,7 +19,8 @@ set -euo pipefail
 [ $# -ge 3 ] || { sed -n '2,16p' "$0"; exit 2; }
 case_dir=$1 model=$2 steps=$3 nprocs=${4:-1} compare=${5:-}
 root=$(cd "$(dirname "$0")/.." && pwd)
-lib=$(realpath "${FLUIDBED_OPENFOAM_LIB:-$root/build/openfoam/libfluidbedOpenFOAM.so}")
+lib=${FLUIDBED_OPENFOAM_LIB:-$root/build/openfoam/libfluidbedOpenFOAM.so}
+[[ $lib != */* ]] || lib=$(realpath "$lib")
 tutorial=/usr/share/doc/openfoam-examples/examples/multiphase/twoPhaseEulerFoam/RAS/fluidisedBed
 export WM_PROJECT_DIR=/usr/share/openfoam FOAM_ETC=/usr/share/openfoam/etc
 

@@ -19,6 +19,9 @@ Usage: check_plugin.py PLUGIN_LIBRARY|none WORK_DIR CHECK
                processes (decomposePar, mpirun, reconstructPar), with OpenFOAM's kinetic theory and
                with every kinetic-theory sub-model fluidbed's (laws OpenFOAM lacks): the fields agree
                within PARALLEL_TOLERANCES (why these: docs/openfoam.md).
+  installed    the plugin installed by `cmake --install BUILD --component openfoam` into a fresh
+               prefix, where BUILD is the build folder holding PLUGIN_LIBRARY: a step of the tutorial
+               loads it by its full path, and by its bare name through LD_LIBRARY_PATH.
   zero_slip    every fluidbed law for one step from the tutorial's state with the gas at rest
                (zero slip in every cell) and its freeboard without particles: K is finite in
                every cell (the plugin's `report`), where a model written with Cd = f(Re)/Re
@@ -205,6 +208,26 @@ def parallel(work):
     return failures
 
 
+def installed(work):
+    build = next(folder for folder in PLUGIN.resolve().parents if (folder / "CMakeCache.txt").is_file())
+    prefix = work / "prefix"
+    subprocess.run(["cmake", "--install", str(build), "--component", "openfoam", "--prefix", str(prefix)],
+                   check=True, stdout=subprocess.DEVNULL)
+    library = next(prefix.glob("lib*/libfluidbedOpenFOAM.so"))
+    failures = 0
+    for way, name, search_path in (("full path", str(library), {}),
+                                   ("bare name", library.name, {"LD_LIBRARY_PATH": str(library.parent)})):
+        case = work / way.replace(" ", "_")
+        env = dict(os.environ, FLUIDBED_OPENFOAM_LIB=name, **search_path)
+        ok = subprocess.run(["bash", str(RUN_CASE), str(case), "MazzeiLettieri", "1"], env=env,
+                            stdout=subprocess.DEVNULL).returncode == 0 \
+            and "fluidbed drag law MazzeiLettieri" in (case / "log.twoPhaseEulerFoam").read_text()
+        failures += not ok
+        print(f"installed {library.relative_to(prefix)}, loaded by its {way}: "
+              f"{'runs MazzeiLettieri' if ok else 'FAILS'}")
+    return failures
+
+
 def known_laws(work):
     case = work / "unknown"
     try:
@@ -300,7 +323,7 @@ def main(argv):
     work = Path(argv[2]) / argv[3]
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
-    return 1 if {"equivalence": equivalence, "run": run, "parallel": parallel, "zero_slip": zero_slip,
+    return 1 if {"equivalence": equivalence, "run": run, "parallel": parallel, "installed": installed, "zero_slip": zero_slip,
                  "parameters": parameters}[argv[3]](work) else 0
 
 
