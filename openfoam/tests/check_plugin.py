@@ -12,9 +12,9 @@ Usage: check_plugin.py PLUGIN_LIBRARY|none WORK_DIR CHECK
   run          each pair of `equivalence` for RUN_STEPS time steps, the OpenFOAM model and the fluidbed
                law (with K compared at every step, as in `equivalence`): the fields differ by no more
                than RUN_FACTOR times what the solver's own tolerance makes of the OpenFOAM model's run
-               (the same run with every linear solver's tolerance TIGHTER times smaller), in the root
-               mean square over the cells; and a wrong pairing (WenYu1966, exponent 2.70, against
-               WenYu, 2.65) exceeds it, so that the check can fail.
+               (the larger difference of the same run with every linear solver's tolerance 10 or 100
+               times smaller: TIGHTER), in the root mean square over the cells; and a wrong pairing
+               (WenYu1966, exponent 2.70, against WenYu, 2.65) exceeds it, so that the check can fail.
   parallel     MazzeiLettieri, Beetstra, DiFeliceDallavalle (no OpenFOAM counterparts), PARALLEL_STEPS
                steps serially and on 2 processes (decomposePar, mpirun, reconstructPar), with
                OpenFOAM's kinetic theory, and MazzeiLettieri with every kinetic-theory sub-model
@@ -61,7 +61,7 @@ NEWTON_REYNOLDS = {"GidaspowSchillerNaumann": 1000.0}
 
 RUN_STEPS = 300
 RUN_FACTOR = 3.0
-TIGHTER = 100
+TIGHTER = (10, 100)  # one such run alone measures the solver's spread to within a factor of about 2
 RUN_FIELDS = [
     "alpha.particles",
     "U.particles*alpha.particles",
@@ -69,7 +69,13 @@ RUN_FIELDS = [
     "p_rgh",
     "Theta.particles*alpha.particles",
 ]
-TIGHTEN = f"perl -pi -e 's/^(\\s*tolerance\\s+)(\\S+);/$1 . ($2 \\/ {TIGHTER}) . \";\"/e' system/fvSolution"
+
+
+def tighten(factor):
+    """FLUIDBED_CASE_SETUP dividing every linear solver's tolerance by `factor`."""
+    return f"perl -pi -e 's/^(\\s*tolerance\\s+)(\\S+);/$1 . ($2 \\/ {factor}) . \";\"/e' system/fvSolution"
+
+
 WRONG_PAIR = ("WenYu1966", "WenYu")
 
 PARALLEL_STEPS = 5
@@ -156,34 +162,40 @@ def run(work):
     """The `run` check: the runs two at a time, then each pair judged."""
     native = sorted({reference for _, reference in PAIRS})
     jobs = [(work / f"openfoam_{reference}", f"openfoam:{reference}", "", "") for reference in native]
-    jobs += [(work / f"openfoam_{reference}_tighter", f"openfoam:{reference}", "", TIGHTEN) for reference in native]
+    jobs += [(work / f"openfoam_{reference}_tighter_{factor}", f"openfoam:{reference}", "", tighten(factor))
+             for reference in native for factor in TIGHTER]
     jobs += [(work / f"{law}_{reference}", law, reference, "") for law, reference in PAIRS + [WRONG_PAIR]]
     with ThreadPoolExecutor(max_workers=2) as pool:
         logs = dict(zip((case for case, *_ in jobs),
                         pool.map(lambda job: run_case(job[0], job[1], RUN_STEPS, compare=job[2], setup=job[3]),
                                  jobs)))
-    failures = 0
     print(f"{RUN_STEPS} steps; root mean square over the cells of the difference from OpenFOAM's model, "
-          f"over that of its run with every solver tolerance {TIGHTER} times smaller "
-          f"(at most {RUN_FACTOR:g} required):")
-    for law, reference in PAIRS + [WRONG_PAIR]:
-        case = work / f"{law}_{reference}"
-        solver = spread(work / f"openfoam_{reference}", work / f"openfoam_{reference}_tighter")
-        closure = spread(work / f"openfoam_{reference}", case)
-        ratios = [c / s for c, s in zip(closure, solver)]
-        within = max(ratios) <= RUN_FACTOR
-        compared_steps = COMPARED.findall(logs[case])
-        worst_k = max(float(line[2]) for line in compared_steps) if compared_steps else float("inf")
-        max_re = max(float(line[6]) for line in compared_steps) if compared_steps else float("inf")
-        k_ok = len(compared_steps) == RUN_STEPS and worst_k <= BOUND and max_re < NEWTON_REYNOLDS.get(reference, max_re + 1)
-        wrong = (law, reference) == WRONG_PAIR
-        ok = (not within) if wrong else (within and k_ok)
-        failures += not ok
-        print(f"  {law} against {reference}{' (wrong pairing, must exceed)' if wrong else ''}: "
-              + ", ".join(f"{field} {c:.2e}/{s:.2e} = {c / s:.2f}" for field, c, s in zip(RUN_FIELDS, closure, solver))
-              + (f"; K over {len(compared_steps)} steps within {worst_k:.2e}, max Re {max_re:.3g}" if not wrong else "")
-              + f" {'ok' if ok else 'FAILS'}", flush=True)
-    return failures
+          f"over the larger of its runs with every solver tolerance {' or '.join(map(str, TIGHTER))} times "
+          f"smaller (at most {RUN_FACTOR:g} required):")
+    return sum(judge_run(work, law, reference, logs[work / f"{law}_{reference}"])
+               for law, reference in PAIRS + [WRONG_PAIR])
+
+
+def judge_run(work, law, reference, log):
+    """1 unless the fields of `law` are as close to `reference`'s as the solver's tolerance makes them
+    (and its K within BOUND at every step), or, for the wrong pairing, farther."""
+    native = work / f"openfoam_{reference}"
+    solver = [max(spreads) for spreads in zip(*(spread(native, work / f"openfoam_{reference}_tighter_{factor}")
+                                                for factor in TIGHTER))]
+    closure = spread(native, work / f"{law}_{reference}")
+    ratios = [c / s for c, s in zip(closure, solver)]
+    within = max(ratios) <= RUN_FACTOR
+    steps = COMPARED.findall(log)
+    worst_k = max((float(line[2]) for line in steps), default=float("inf"))
+    max_re = max((float(line[6]) for line in steps), default=float("inf"))
+    k_ok = len(steps) == RUN_STEPS and worst_k <= BOUND and max_re < NEWTON_REYNOLDS.get(reference, float("inf"))
+    wrong = (law, reference) == WRONG_PAIR
+    ok = (not within) if wrong else (within and k_ok)
+    print(f"  {law} against {reference}{' (wrong pairing, must exceed)' if wrong else ''}: "
+          + ", ".join(f"{field} {c:.2e}/{s:.2e} = {c / s:.2f}" for field, c, s in zip(RUN_FIELDS, closure, solver))
+          + ("" if wrong else f"; K over {len(steps)} steps within {worst_k:.2e}, max Re {max_re:.3g}")
+          + f" {'ok' if ok else 'FAILS'}", flush=True)
+    return not ok
 
 
 # The parallel runs: fluidbed's drag laws that OpenFOAM lacks with OpenFOAM's kinetic theory (the
