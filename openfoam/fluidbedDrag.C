@@ -1,5 +1,6 @@
 #include "fluidbedDrag.H"
 #include "fluidbedLawParameters.H"
+#include "fluidbedFieldParts.H"
 #include "phasePair.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -187,50 +188,24 @@ Foam::tmp<Foam::volScalarField> Foam::dragModels::fluidbedDrag::beta
     const tmp<volScalarField> tmu(pair_.continuous().mu());
     const tmp<volScalarField> td(pair_.dispersed().d());
 
+    using namespace fluidbedFieldParts;
     tmp<volScalarField> tbeta
     (
-        new volScalarField
-        (
-            IOobject
-            (
-                IOobject::groupName("fluidbed:beta", pair_.name()),
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh,
-            dimensionedScalar(dimK, Zero)
-        )
+        newField(IOobject::groupName("beta", pair_.name()), mesh, dimK)
     );
-    volScalarField& beta = tbeta.ref();
-
-    evaluate
-    (
-        mesh.nCells(),
-        phi.primitiveField().cdata(),
-        tslip().primitiveField().cdata(),
-        rho.primitiveField().cdata(),
-        tmu().primitiveField().cdata(),
-        td().primitiveField().cdata(),
-        beta.primitiveFieldRef().data()
-    );
-
-    volScalarField::Boundary& betab = beta.boundaryFieldRef();
-    forAll(betab, patchi)
+    forEachPart(mesh, [&](const label part)
     {
         evaluate
         (
-            betab[patchi].size(),
-            phi.boundaryField()[patchi].cdata(),
-            tslip().boundaryField()[patchi].cdata(),
-            rho.boundaryField()[patchi].cdata(),
-            tmu().boundaryField()[patchi].cdata(),
-            td().boundaryField()[patchi].cdata(),
-            betab[patchi].data()
+            partSize(mesh, part),
+            in(phi, part),
+            in(tslip(), part),
+            in(rho, part),
+            in(tmu(), part),
+            in(td(), part),
+            out(tbeta.ref(), part)
         );
-    }
+    });
 
     return tbeta;
 }

@@ -1,5 +1,6 @@
 #include "fluidbedKineticTheory.H"
 #include "fluidbedLawParameters.H"
+#include "fluidbedFieldParts.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvcGrad.H"
 
@@ -55,65 +56,7 @@ namespace
 {
 
 using namespace Foam;
-
-// A field's values are evaluated part by part: the cells (part -1), then
-// each boundary patch, one bridge call per array.
-template<class Evaluate>
-void forEachPart(const fvMesh& mesh, const Evaluate& evaluate)
-{
-    evaluate(label(-1));
-    forAll(mesh.boundary(), patchi)
-    {
-        evaluate(patchi);
-    }
-}
-
-label partSize(const fvMesh& mesh, const label part)
-{
-    return part < 0 ? mesh.nCells() : mesh.boundary()[part].size();
-}
-
-const scalar* in(const volScalarField& field, const label part)
-{
-    return
-        part < 0
-      ? field.primitiveField().cdata()
-      : field.boundaryField()[part].cdata();
-}
-
-scalar* out(volScalarField& field, const label part)
-{
-    return
-        part < 0
-      ? field.primitiveFieldRef().data()
-      : field.boundaryFieldRef()[part].data();
-}
-
-tmp<volScalarField> newField
-(
-    const word& name,
-    const fvMesh& mesh,
-    const dimensionSet& dimensions
-)
-{
-    return tmp<volScalarField>
-    (
-        new volScalarField
-        (
-            IOobject
-            (
-                "fluidbed:" + name,
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh,
-            dimensionedScalar(dimensions, Zero)
-        )
-    );
-}
+using namespace Foam::fluidbedFieldParts;
 
 // The solids fraction the laws take: a negative round-off of the
 // transported fraction is 0.
