@@ -82,20 +82,22 @@ extern "C" size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_l
   try {
     std::visit(
         [&](const auto& l) {
-          const auto beta_as = [&](auto one) {
-            using T = decltype(one);
-            const fluidbed::drag::DragState<T> state{one - T(particle_fraction[i]),
-                                                     T(slip[i]),
-                                                     {T(fluid_density[i]), T(fluid_viscosity[i])},
-                                                     T(diameter[i])};
-            return static_cast<double>(l.checked(state).pressure_gradient());
+          const auto beta_at = [&](double voidage) {
+            const fluidbed::drag::DragState<double> state{
+                voidage, slip[i], {fluid_density[i], fluid_viscosity[i]}, diameter[i]};
+            return l.checked(state).pressure_gradient();
           };
           for (; i < n; ++i) {
-            // The law forms phi back as 1 - voidage. In double, 1 - phi rounds by up to 2^-54, which
-            // is more than 2^-50 of phi below phi = 1/16: there the law runs in long double, where
-            // (x86: 64 significand bits) the rounding is 2^-65, 3e-14 of phi at phi = 1e-6.
-            const bool small = particle_fraction[i] > 0 && particle_fraction[i] < 0.0625;
-            beta[i] = small ? beta_as(1.0L) : beta_as(1.0);
+            // The law forms phi back as 1 - voidage, and 1 - (1 - phi) keeps only the digits of phi
+            // above 2^-53: at phi = 1e-6 ten of its sixteen. beta is phi times a function h smooth
+            // in phi (every law's beta vanishes like phi), so beta at the phi the law sees, phi',
+            // times phi/phi' is phi h(phi'), within |h'/h| |phi - phi'| <= |h'/h| 2^-53 of
+            // phi h(phi): a few ulp. (Without particles phi' = 0 and beta = 0.)
+            const double phi = particle_fraction[i];
+            const double voidage = 1.0 - phi;
+            const double seen = 1.0 - voidage;  // exact (Sterbenz: voidage in [1/2, 2] for phi <= 1/2)
+            const double beta_seen = beta_at(voidage);
+            beta[i] = (seen > 0 && seen != phi && phi < 0.5) ? beta_seen * (phi / seen) : beta_seen;
           }
         },
         law->law);

@@ -31,9 +31,9 @@ const char* fluidbed_drag_law_name(const fluidbed_drag_law* law);
  * two-fluid solvers), per unit volume of suspension, for the n states
  * (particle_fraction[i] = phi in [0, 1), interstitial slip[i] = |u_f - v_p| >= 0, fluid density[i],
  * fluid dynamic viscosity[i], particle diameter[i]), each validated by the law's checked entry point.
- * The particle fraction is passed, not the voidage: where phi is small (below 1/16) the law is
- * evaluated in long double with the voidage 1 - phi formed there, so that the phi it forms back
- * carries the particle fraction's double digits (in double, 1 - (1 - phi) loses them).
+ * The particle fraction is passed, not the voidage: the law is evaluated at the voidage 1 - phi,
+ * where it sees phi' = 1 - (1 - phi), which has lost the digits of phi below 2^-53, and beta is
+ * multiplied by phi/phi' (beta is phi times a function smooth in phi), so that it keeps them.
  * Returns n when every state is valid, else the index of the first invalid one, with `message`
  * naming the offending argument and value; beta is then written only below that index. */
 size_t fluidbed_drag_law_pressure_gradient_beta(const fluidbed_drag_law* law, size_t n,
