@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "domain.hpp"
+#include "parameters.hpp"
 
 namespace fluidbed {
 

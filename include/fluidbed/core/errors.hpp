@@ -25,6 +25,7 @@
 #include <string_view>
 
 #include "domain.hpp"
+#include "parameters.hpp"
 
 namespace fluidbed {
 
@@ -198,6 +199,28 @@ void require_in_half_open(std::string_view function, std::string_view argument, 
 template <class T>
 void require_in_open(std::string_view function, std::string_view argument, const T& x, const T& lower, const T& upper) {
   require_in(function, argument, x, domains::open(lower, upper));
+}
+
+// The names of a closure type's parameters, comma-separated ("none" without any), for messages.
+template <class Law>
+std::string parameter_names() {
+  std::string names;
+  for (const auto& p : parameters_of<Law>()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  return names.empty() ? "none" : names;
+}
+
+// Sets `law`'s parameter `name` to `value` and validates the law's parameters at once: throws
+// std::invalid_argument where the law has no such parameter (naming those it has), and
+// std::domain_error, as the checked entry points do, where the value leaves the parameters'
+// domain; `law` is unchanged when it throws.
+template <class Law>
+void set_parameter_checked(Law& law, std::string_view name, double value) {
+  Law changed = law;
+  if (!set_parameter(changed, name, value))
+    throw std::invalid_argument("fluidbed: " + std::string(law.name()) + " has no parameter '" + std::string(name) +
+                                "'; its parameters: " + parameter_names<Law>());
+  require_within(changed.name(), parameter_domain_in_double(changed));
+  law = changed;
 }
 
 }  // namespace fluidbed

@@ -67,6 +67,9 @@ class SyamlalOBrien : public DragLaw<SyamlalOBrien> {
   FLUIDBED_HOST_DEVICE constexpr Arguments<T, 2> parameter_domain() const {
     return {{{"c1", T(c1_), domains::positive<T>()}, {"d1", T(d1_), domains::finite<T>()}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&SyamlalOBrien::c1_>("c1"), parameter<&SyamlalOBrien::d1_>("d1")};
+  }
   constexpr std::string_view name() const { return "SyamlalOBrien"; }
   constexpr std::string_view reference() const {
     return "Syamlal, M., O'Brien, T.J. (1989) AIChE Symp. Ser. 85(270), 22-31; Syamlal, M., Rogers, W., "

@@ -66,6 +66,7 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
   FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1> parameter_domain() const {
     return {{{"exponent", T(exponent_), domains::finite<T>()}}};
   }
+  static constexpr auto parameters() { return std::array{parameter<&ConstantExponentDrag::exponent_>("exponent")}; }
   constexpr std::string_view name() const { return name_; }
   constexpr std::string_view reference() const { return reference_; }
   constexpr ValidityRange validity() const { return {0.8, 1.0, 0.0, 1.0e5}; }

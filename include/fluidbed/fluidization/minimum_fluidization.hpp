@@ -58,6 +58,10 @@ struct ErgunMinimumFluidization : single_particle::ArchimedesCorrelation<ErgunMi
     return {{{"voidage", T(voidage), domains::open(T(0), T(1))},
              {"sphericity", T(sphericity), domains::half_open(T(0), T(1))}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&ErgunMinimumFluidization::voidage>("voidage"),
+                      parameter<&ErgunMinimumFluidization::sphericity>("sphericity")};
+  }
 
   template <class S>
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {

@@ -83,6 +83,14 @@ struct JohnsonJacksonPressure : SolidFractionLaw<JohnsonJacksonPressure> {
                                       {"numerator_exponent", numerator_exponent, non_negative},
                                       {"denominator_exponent", denominator_exponent, non_negative}}});
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&JohnsonJacksonPressure::max_packing>("max_packing"),
+                      parameter<&JohnsonJacksonPressure::packing_margin>("packing_margin"),
+                      parameter<&JohnsonJacksonPressure::min_fraction>("min_fraction"),
+                      parameter<&JohnsonJacksonPressure::coefficient>("coefficient"),
+                      parameter<&JohnsonJacksonPressure::numerator_exponent>("numerator_exponent"),
+                      parameter<&JohnsonJacksonPressure::denominator_exponent>("denominator_exponent")};
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
@@ -116,6 +124,11 @@ struct SchaefferPressure : SolidFractionLaw<SchaefferPressure> {
     return {{{"min_fraction", min_fraction, domains::closed_open(0.0, 1.0)},
              {"coefficient", coefficient, domains::non_negative<double>()},
              {"exponent", exponent, domains::non_negative<double>()}}};
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&SchaefferPressure::min_fraction>("min_fraction"),
+                      parameter<&SchaefferPressure::coefficient>("coefficient"),
+                      parameter<&SchaefferPressure::exponent>("exponent")};
   }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
@@ -158,6 +171,10 @@ struct SchaefferViscosity : KineticTheoryLaw<SchaefferViscosity> {
   constexpr Validity<0> validity() const { return {}; }
   constexpr Arguments<double, 2> parameter_domain() const {
     return detail::yield_domain(friction_angle, strain_rate_floor);
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&SchaefferViscosity::friction_angle>("friction_angle"),
+                      parameter<&SchaefferViscosity::strain_rate_floor>("strain_rate_floor")};
   }
   // p_f ≥ 0, the strain rate as domain(StrainRate).
   template <class T>
@@ -242,6 +259,11 @@ struct SrivastavaSundaresan : KineticTheoryLaw<SrivastavaSundaresan> {
   constexpr Validity<0> validity() const { return {}; }
   constexpr Arguments<double, 8> parameter_domain() const {
     return join(critical_state_pressure.parameter_domain(), detail::yield_domain(friction_angle, strain_rate_floor));
+  }
+  static constexpr auto parameters() {
+    return join_parameters(nested_parameters<&SrivastavaSundaresan::critical_state_pressure>(),
+                           std::array{parameter<&SrivastavaSundaresan::friction_angle>("friction_angle"),
+                                      parameter<&SrivastavaSundaresan::strain_rate_floor>("strain_rate_floor")});
   }
   // φ ∈ [0, 1), Θ ≥ 0, d > 0, the strain rate as domain(StrainRate).
   template <class T>

@@ -89,6 +89,9 @@ struct KochSanganiSource : KineticTheoryLaw<KochSanganiSource> {
   constexpr Arguments<double, 1> parameter_domain() const {
     return detail::temperature_floor_domain(temperature_floor);
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&KochSanganiSource::temperature_floor>("temperature_floor")};
+  }
   // φ ∈ [0, 1), Θ ≥ 0, g0 > 0, w ≥ 0, μ_g > 0, material as domain(GranularMaterial).
   template <class T>
   FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 8> argument_domain(const T& phi, const T& theta, const T& g0,
@@ -143,6 +146,9 @@ struct DragFluctuationSource : KineticTheoryLaw<DragFluctuationSource> {
   constexpr Validity<0> validity() const { return {}; }
   constexpr Arguments<double, 1> parameter_domain() const {
     return detail::temperature_floor_domain(temperature_floor);
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&DragFluctuationSource::temperature_floor>("temperature_floor")};
   }
   // φ ∈ (0, 1) (the source divides by φ), Θ ≥ 0, β ≥ 0, w ≥ 0, material as domain(GranularMaterial).
   template <class T>

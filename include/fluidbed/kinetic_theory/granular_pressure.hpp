@@ -77,6 +77,9 @@ struct AhmadiMaPressure : ConstitutiveLaw<AhmadiMaPressure> {
   constexpr Arguments<double, 1> parameter_domain() const {
     return {{{"friction_coefficient", friction_coefficient, domains::non_negative<double>()}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&AhmadiMaPressure::friction_coefficient>("friction_coefficient")};
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE constexpr S kernel(const S& phi, const S& theta, const S& g0,
                                           const GranularMaterial<T>& m) const {

@@ -208,6 +208,10 @@ struct ModifiedMansoori : MixtureRadialDistribution<ModifiedMansoori> {
   constexpr Arguments<double, 2> parameter_domain() const {
     return detail::packing_domain(max_packing, packing_margin);
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&ModifiedMansoori::max_packing>("max_packing"),
+                      parameter<&ModifiedMansoori::packing_margin>("packing_margin")};
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kernel(std::span<const S> fractions, std::span<const T> diameters, std::size_t i,
                                 std::size_t k) const {

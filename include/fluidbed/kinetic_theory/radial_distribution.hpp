@@ -89,6 +89,10 @@ struct LunSavage : SolidFractionLaw<LunSavage> {
   constexpr Arguments<double, 2> parameter_domain() const {
     return detail::packing_domain(max_packing, packing_margin);
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&LunSavage::max_packing>("max_packing"),
+                      parameter<&LunSavage::packing_margin>("packing_margin")};
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
@@ -114,6 +118,10 @@ struct CubeRootContact : SolidFractionLaw<Law> {
       : max_packing(max_packing_), packing_margin(packing_margin_) {}
   constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing}}}; }
   constexpr Arguments<double, 2> parameter_domain() const { return packing_domain(max_packing, packing_margin); }
+  static constexpr auto parameters() {
+    return std::array{parameter<&CubeRootContact::max_packing, Law>("max_packing"),
+                      parameter<&CubeRootContact::packing_margin, Law>("packing_margin")};
+  }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::cbrt;
@@ -188,6 +196,8 @@ struct MaAhmadi : SolidFractionLaw<MaAhmadi> {
   constexpr Arguments<double, 2> parameter_domain() const {
     return detail::packing_domain(max_packing<double>(), packing_margin);
   }
+  // The packing limit is a constant of Ma and Ahmadi's fit, not a parameter.
+  static constexpr auto parameters() { return std::array{parameter<&MaAhmadi::packing_margin>("packing_margin")}; }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
     using std::pow;
@@ -263,6 +273,10 @@ struct LathouwersBellan : SolidFractionLaw<LathouwersBellan> {
   constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing}}}; }
   constexpr Arguments<double, 2> parameter_domain() const {
     return detail::packing_domain(max_packing, packing_margin);
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&LathouwersBellan::max_packing>("max_packing"),
+                      parameter<&LathouwersBellan::packing_margin>("packing_margin")};
   }
   template <class S>
   FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {

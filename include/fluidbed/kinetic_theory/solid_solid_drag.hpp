@@ -49,6 +49,9 @@ struct SyamlalSolidSolidDrag : KineticTheoryLaw<SyamlalSolidSolidDrag> {
   constexpr Arguments<double, 1> parameter_domain() const {
     return {{{"friction_coefficient", friction_coefficient, domains::non_negative<double>()}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&SyamlalSolidSolidDrag::friction_coefficient>("friction_coefficient")};
+  }
   // φ_p, φ_q ∈ [0, 1), densities and diameters > 0, e ∈ [0, 1], g_pq > 0, |Δv| ≥ 0.
   template <class T>
   FLUIDBED_HOST_DEVICE static constexpr Arguments<T, 9> argument_domain(const T& phi_p, const T& phi_q,

@@ -105,6 +105,9 @@ struct HrenyaSinclairViscosity : WithGidaspowCollisionalViscosity<HrenyaSinclair
   constexpr std::string_view reference() const { return detail::references::hrenya_sinclair_1997; }
   constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
   constexpr Arguments<double, 1> parameter_domain() const { return detail::length_scale_domain(length_scale); }
+  static constexpr auto parameters() {
+    return std::array{parameter<&HrenyaSinclairViscosity::length_scale>("length_scale")};
+  }
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S kinetic(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
     using std::sqrt;

@@ -188,6 +188,9 @@ struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exp
   FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1> parameter_domain() const {
     return {{{"wall_ratio", T(wall_ratio), domains::closed_open(T(0), T(1))}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&RichardsonZaki1954Exponent::wall_ratio>("wall_ratio")};
+  }
 
   template <class S>
   FLUIDBED_HOST_DEVICE S exponent(const S& terminal_reynolds) const {
@@ -267,6 +270,9 @@ struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
     const T largest = pow(1 / FLUIDBED_DECIMAL(T, 2.4), 1 / FLUIDBED_DECIMAL(T, 0.27));
     return {{{"wall_ratio", T(wall_ratio), domains::closed_open(T(0), largest),
               "must be >= 0 and < (1/2.4)^(1/0.27) = 0.0391, where 1 - 2.4 (d/D)^0.27 > 0"}}};
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&KhanRichardsonExponent::wall_ratio>("wall_ratio")};
   }
 
   template <class S>

@@ -48,6 +48,9 @@ struct HaiderLevenspielTerminalVelocity : ArchimedesCorrelation<HaiderLevenspiel
   FLUIDBED_HOST_DEVICE constexpr Arguments<T, 1> parameter_domain() const {
     return {{{"sphericity", T(sphericity), domains::closed(T(0.5L), T(1))}}};
   }
+  static constexpr auto parameters() {
+    return std::array{parameter<&HaiderLevenspielTerminalVelocity::sphericity>("sphericity")};
+  }
 
   template <class S>
   FLUIDBED_HOST_DEVICE S reynolds_of_archimedes(const S& archimedes) const {
