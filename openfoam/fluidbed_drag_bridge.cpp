@@ -2,15 +2,12 @@
 // registry evaluated over whole arrays, one dispatch on the law per array, not per cell.
 #include "fluidbed_drag_bridge.h"
 
-#include <array>
-#include <concepts>
 #include <exception>
 #include <string>
-#include <string_view>
 #include <variant>
 
 #include "fluidbed/drag.hpp"
-#include "fluidbed_bridge_message.hpp"
+#include "fluidbed_bridge_parameters.hpp"
 
 struct fluidbed_drag_law {
   fluidbed::drag::AnyDragLaw law;
@@ -18,32 +15,6 @@ struct fluidbed_drag_law {
 };
 
 using fluidbed::openfoam::write_message;
-
-namespace {
-
-// The parameters a dictionary may set, by key (the names of the laws' accessors).
-constexpr std::array<std::string_view, 3> parameter_keys{"exponent", "c1", "d1"};
-
-// Whether the law has the parameter `key`; where it has and `value` is not null, sets it. The
-// laws hold their parameters privately: a changed one is a law built anew.
-template <class Law>
-bool parameter(Law& law, std::string_view key, const double* value) {
-  using fluidbed::drag::ConstantExponentDrag;
-  using fluidbed::drag::SyamlalOBrien;
-  if constexpr (std::same_as<Law, ConstantExponentDrag>) {
-    if (key != "exponent") return false;
-    if (value != nullptr) law = ConstantExponentDrag(*value, law.name(), law.reference());
-    return true;
-  } else if constexpr (std::same_as<Law, SyamlalOBrien>) {
-    if (key != "c1" && key != "d1") return false;
-    if (value != nullptr) law = key == "c1" ? SyamlalOBrien(*value, law.d1()) : SyamlalOBrien(law.c1(), *value);
-    return true;
-  } else {
-    return false;
-  }
-}
-
-}  // namespace
 
 extern "C" fluidbed_drag_law* fluidbed_drag_law_create(const char* name, char* message, size_t message_size) {
   try {
@@ -60,14 +31,7 @@ extern "C" void fluidbed_drag_law_destroy(fluidbed_drag_law* law) { delete law; 
 extern "C" int fluidbed_drag_law_set(fluidbed_drag_law* law, const char* key, double value, char* message,
                                      size_t message_size) {
   return std::visit(
-      [&](auto& l) {
-        if (parameter(l, key, &value)) return 1;
-        std::string known;
-        for (const std::string_view k : parameter_keys)
-          if (parameter(l, k, nullptr)) known += (known.empty() ? "" : ", ") + std::string(k);
-        write_message(fluidbed::openfoam::unknown_parameter(law->name, key, known), message, message_size);
-        return 0;
-      },
+      [&](auto& l) { return fluidbed::openfoam::set_dictionary_parameter(l, key, value, message, message_size); },
       law->law);
 }
 

@@ -20,8 +20,10 @@ fluidbed_drag_law* fluidbed_drag_law_create(const char* name, char* message, siz
 
 void fluidbed_drag_law_destroy(fluidbed_drag_law* law);
 
-/* Sets the law's parameter `key` (the constant-exponent laws' exponent; SyamlalOBrien's c1, d1).
- * Returns 1, or 0 when the law has no such parameter, with `message` listing those it has. */
+/* Sets the law's parameter `key`, the library's parameter name in camelCase (the constant-exponent
+ * laws' exponent; SyamlalOBrien's c1, d1). Returns 1, or 0 when the law has no such parameter,
+ * with `message` listing those it has, or when the value is outside the parameter's domain, with
+ * the library's checked message. */
 int fluidbed_drag_law_set(fluidbed_drag_law* law, const char* key, double value, char* message, size_t message_size);
 
 /* The law's run-time name (valid while the law lives). */

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,7 +19,7 @@
 #include <variant>
 
 #include "fluidbed/kinetic_theory/registry.hpp"
-#include "fluidbed_bridge_message.hpp"
+#include "fluidbed_bridge_parameters.hpp"
 
 namespace kt = fluidbed::kinetic_theory;
 
@@ -51,47 +50,9 @@ AnyLaw make_law(std::size_t wanted, std::string_view name, std::index_sequence<k
   return law;
 }
 
-// The parameters a dictionary may set, by key; angles are given in degrees (OpenFOAM's habit).
-struct ParameterKey {
-  std::string_view key;
-  bool degrees;
-};
-constexpr std::array<ParameterKey, 9> parameter_keys{{{"packingMargin", false},
-                                                      {"lengthScale", false},
-                                                      {"frictionCoefficient", false},
-                                                      {"coefficient", false},
-                                                      {"numeratorExponent", false},
-                                                      {"denominatorExponent", false},
-                                                      {"exponent", false},
-                                                      {"frictionAngle", true},
-                                                      {"strainRateFloor", false}}};
-
-// The law's parameter called `key`, or nullptr. The Srivastava–Sundaresan stress exposes those
-// of its critical-state pressure as its own.
-template <class Law>
-double* parameter(Law& law, std::string_view key) {
-  if constexpr (requires { law.critical_state_pressure; })
-    if (double* p = parameter(law.critical_state_pressure, key)) return p;
-  if constexpr (requires { law.packing_margin = 0.0; })
-    if (key == "packingMargin") return &law.packing_margin;
-  if constexpr (requires { law.length_scale = 0.0; })
-    if (key == "lengthScale") return &law.length_scale;
-  if constexpr (requires { law.friction_coefficient = 0.0; })
-    if (key == "frictionCoefficient") return &law.friction_coefficient;
-  if constexpr (requires { law.coefficient = 0.0; })
-    if (key == "coefficient") return &law.coefficient;
-  if constexpr (requires { law.numerator_exponent = 0.0; })
-    if (key == "numeratorExponent") return &law.numerator_exponent;
-  if constexpr (requires { law.denominator_exponent = 0.0; })
-    if (key == "denominatorExponent") return &law.denominator_exponent;
-  if constexpr (requires { law.exponent = 0.0; })
-    if (key == "exponent") return &law.exponent;
-  if constexpr (requires { law.friction_angle = 0.0; })
-    if (key == "frictionAngle") return &law.friction_angle;
-  if constexpr (requires { law.strain_rate_floor = 0.0; })
-    if (key == "strainRateFloor") return &law.strain_rate_floor;
-  return nullptr;
-}
+// The parameters the solver gives every evaluation (alphaMax, alphaMinFriction): not dictionary
+// entries.
+constexpr std::array<std::string_view, 2> from_solver{"max_packing", "min_fraction"};
 
 // The solver's packing limit and onset of friction, set on a copy of the law where it has them
 // (MaAhmadi's fitted packing limit is not a parameter and stays).
@@ -175,18 +136,7 @@ extern "C" int fluidbed_kt_law_set(fluidbed_kt_law* law, const char* key, double
       [&](auto& v) {
         return std::visit(
             [&](auto& l) {
-              for (const ParameterKey& k : parameter_keys)
-                if (k.key == key)
-                  if (double* p = parameter(l, k.key)) {
-                    *p = k.degrees ? value * std::numbers::pi / 180 : value;
-                    return 1;
-                  }
-              std::string known;
-              for (const ParameterKey& k : parameter_keys)
-                if (parameter(l, k.key) != nullptr) known += (known.empty() ? "" : ", ") + std::string(k.key);
-              fluidbed::openfoam::write_message(fluidbed::openfoam::unknown_parameter(l.name(), key, known), message,
-                                                message_size);
-              return 0;
+              return fluidbed::openfoam::set_dictionary_parameter(l, key, value, message, message_size, from_solver);
             },
             v);
       },

@@ -39,12 +39,12 @@ void fluidbed_kt_law_destroy(fluidbed_kt_law* law);
 /* The law's run-time name (valid while the law lives). */
 const char* fluidbed_kt_law_name(const fluidbed_kt_law* law);
 
-/* Sets the law's parameter `key` (the member's name in camelCase: packingMargin, lengthScale,
- * frictionCoefficient, coefficient, numeratorExponent, denominatorExponent, exponent,
- * frictionAngle in degrees as OpenFOAM writes angles, strainRateFloor). maxPacking and
+/* Sets the law's parameter `key`: the library's parameter name in camelCase (packingMargin,
+ * lengthScale, frictionCoefficient, coefficient, numeratorExponent, denominatorExponent,
+ * exponent, frictionAngle in degrees as OpenFOAM writes angles, strainRateFloor). maxPacking and
  * minFraction are not set here: every evaluation takes them from the solver. Returns 1, or 0 when
- * the law has no such parameter, with `message` listing those it has. The value's domain is
- * checked at evaluation. */
+ * the law has no such parameter, with `message` listing those it has, or when the value is outside
+ * the parameter's domain, with the library's checked message. */
 int fluidbed_kt_law_set(fluidbed_kt_law* law, const char* key, double value, char* message, size_t message_size);
 
 /* In every evaluation below, max_packing and min_fraction (OpenFOAM's alphaMax and

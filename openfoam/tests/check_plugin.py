@@ -32,7 +32,8 @@ Usage: check_plugin.py PLUGIN_LIBRARY|none WORK_DIR CHECK
   parameters   laws' parameters from the drag dictionary: WenYu1966 with exponent 2.65 equal to
                OpenFOAM's WenYu within 1e-12 (and not without it), SyamlalOBrien with c1, d1 set to
                OpenFOAM's values equal to its SyamlalOBrien; an entry the law lacks stops the solver
-               with the law's parameters listed.
+               with the law's parameters listed, and so does a value outside its domain, with the
+               library's checked message; the same for a kinetic-theory sub-model's entries.
 """
 
 import os
@@ -287,6 +288,23 @@ REJECTED = [
 ]
 
 
+# The kinetic-theory sub-models' parameters: the solver's alphaMax is not a dictionary entry, and a
+# value outside its domain stops the solver with the library's checked message.
+KINETIC_THEORY_REJECTED = [
+    ("fluidbedRadialCoeffs", "maxPacking 0.6;",
+     "fluidbed: LunSavage has no parameter 'maxPacking'; its parameters: packingMargin"),
+    ("fluidbedRadialCoeffs", "packingMargin 0.75;",
+     "fluidbed::LunSavage: argument 'packing_margin' = 0.75 is out of domain (must lie in (0, 0.63))"),
+]
+
+
+def with_kinetic_theory_entry(coefficients, given):
+    """FLUIDBED_CASE_SETUP: the plugin's kinetic-theory sub-models (the `hrenya` set of
+    openfoam/kinetic_theory_case.py) with `given` added to the sub-dictionary `coefficients`."""
+    return (f"python3 {KINETIC_THEORY_CASE} setup hrenya {PLUGIN.resolve()} && "
+            f"sed -i -E 's/({coefficients} *\\{{ *)/\\1{given} /' constant/turbulenceProperties.particles")
+
+
 def parameters(work):
     failures = sum(equivalent(work / f"{law}_{reference}", law, reference, given)
                    for law, given, reference in PARAMETER_PAIRS)
@@ -308,6 +326,15 @@ def parameters(work):
         failures += not ok
         print(f"{law} {given}: {'stops' if stopped else 'runs'} {'with' if ok else 'without'} \"{expected}\" "
               f"{'ok' if ok else 'FAILS'}")
+    for index, (coefficients, given, expected) in enumerate(KINETIC_THEORY_REJECTED):
+        case = work / f"rejected_kinetic_theory_{index}"
+        stopped = subprocess.run(["bash", str(RUN_CASE), str(case), "openfoam:GidaspowErgunWenYu", "1"],
+                                 env=dict(os.environ, FLUIDBED_CASE_SETUP=with_kinetic_theory_entry(coefficients, given)),
+                                 stdout=subprocess.DEVNULL).returncode != 0
+        ok = stopped and expected in (case / "log.twoPhaseEulerFoam").read_text()
+        failures += not ok
+        print(f"{coefficients} {given}: {'stops' if stopped else 'runs'} {'with' if ok else 'without'} "
+              f"\"{expected}\" {'ok' if ok else 'FAILS'}")
     return failures
 
 
