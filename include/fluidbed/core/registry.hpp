@@ -51,6 +51,8 @@ struct Registry {
   static_assert(sizeof...(Laws) > 0, "a registry lists at least one closure");
 
   using Variant = std::variant<Laws...>;
+  // The family's tag: what its closures are (`what`) and their `convention`.
+  using family = Family;
   // This registry with more closures: a user's own laws beside the library's.
   template <class... More>
   using with = Registry<Family, Laws..., More...>;

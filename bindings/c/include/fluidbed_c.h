@@ -1,0 +1,183 @@
+/* fluidbed — the library's closures from C, and from whatever calls C (Fortran through
+ * iso_c_binding, Python, a host solver written in C or in an older C++).
+ *
+ * A closure is chosen once by its run-time name (the names are unique across the library; the
+ * catalogue below lists them) and then evaluated over arrays of cells: one array per argument,
+ * the layout CFD fields use (structure of arrays), each of n elements, in SI units. Every
+ * evaluation validates every cell as the C++ library's checked entry points do and stops at the
+ * first invalid one.
+ *
+ * Errors: every function that can fail returns a fluidbed_status and, when `error` is not NULL,
+ * writes the status, the index of the first cell that failed (outputs are then written only
+ * below it) and the C++ library's message ("fluidbed::SyamlalOBrien: argument 'voidage' = 1.5 is
+ * out of domain (must lie in (0, 1])"). No exception crosses this interface, nothing is global
+ * but constant tables, and a closure handle may be evaluated from several threads at once
+ * (setting its parameters may not race with evaluating it).
+ *
+ * Values are bit for bit those of the C++ calls: the value of law.checked(...), the derivatives
+ * of law.checked_with_derivatives(...). */
+#ifndef FLUIDBED_C_H
+#define FLUIDBED_C_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FLUIDBED_C_API_VERSION 1
+
+/* The library exports these functions only. */
+#if defined(FLUIDBED_C_BUILDING) && defined(__GNUC__)
+#define FLUIDBED_C_API __attribute__((visibility("default")))
+#else
+#define FLUIDBED_C_API
+#endif
+
+/* ---- Errors ---------------------------------------------------------------------------- */
+
+typedef enum fluidbed_status {
+  FLUIDBED_OK = 0,
+  FLUIDBED_UNKNOWN_NAME = 1,      /* no closure (of the family asked for) by that name */
+  FLUIDBED_UNKNOWN_PARAMETER = 2, /* the closure has no parameter by that name */
+  FLUIDBED_DOMAIN_ERROR = 3,      /* an argument or parameter outside its domain, or a result that is
+                                     not finite: the checked C++ API's std::domain_error */
+  FLUIDBED_INVALID_ARGUMENT = 4,  /* a NULL array or handle, a closure of another family, an unknown
+                                     enumerator */
+  FLUIDBED_INTERNAL_ERROR = 5     /* anything else (out of memory) */
+} fluidbed_status;
+
+#define FLUIDBED_MESSAGE_SIZE 512
+
+typedef struct fluidbed_error {
+  fluidbed_status status;
+  size_t index;                         /* the first cell that failed; 0 where no cell is involved */
+  char message[FLUIDBED_MESSAGE_SIZE];  /* always terminated; "" on success */
+} fluidbed_error;
+
+/* The status's name ("FLUIDBED_DOMAIN_ERROR"). */
+FLUIDBED_C_API const char* fluidbed_status_name(fluidbed_status status);
+
+/* ---- Families and the catalogue -------------------------------------------------------- */
+
+/* One family per registry of the C++ library (fluidbed::Registries), in its order. */
+typedef enum fluidbed_family {
+  FLUIDBED_SPHERE_DRAG_COEFFICIENT = 0,   /* C_D·Re of one sphere, of Re */
+  FLUIDBED_TERMINAL_VELOCITY = 1,         /* Re_t of Ar, one sphere */
+  FLUIDBED_RICHARDSON_ZAKI_EXPONENT = 2,  /* n of Re_t or of Ar */
+  FLUIDBED_MINIMUM_FLUIDIZATION = 3,      /* Re_mf of Ar */
+  FLUIDBED_DRAG_LAW = 4,                  /* β of (ε, w, ρ_f, μ_f, d) */
+  FLUIDBED_ELASTIC_MODULUS = 5,
+  FLUIDBED_RADIAL_DISTRIBUTION = 6,
+  FLUIDBED_MIXTURE_RADIAL_DISTRIBUTION = 7,
+  FLUIDBED_GRANULAR_PRESSURE = 8,
+  FLUIDBED_SHEAR_VISCOSITY = 9,
+  FLUIDBED_BULK_VISCOSITY = 10,
+  FLUIDBED_CONDUCTIVITY = 11,
+  FLUIDBED_DISSIPATION = 12,
+  FLUIDBED_FRICTIONAL_PRESSURE = 13,
+  FLUIDBED_FRICTIONAL_VISCOSITY = 14,
+  FLUIDBED_FRICTIONAL_STRESS = 15,
+  FLUIDBED_GAS_EXCHANGE_SOURCE = 16,
+  FLUIDBED_SOLID_SOLID_DRAG = 17,
+  FLUIDBED_FAMILY_COUNT = 18
+} fluidbed_family;
+
+/* What the family's closures are ("drag law"), and their convention: the quantity, its units
+ * and sign, the definitions of the arguments. NULL for a value that is not a family. */
+FLUIDBED_C_API const char* fluidbed_family_what(fluidbed_family family);
+FLUIDBED_C_API const char* fluidbed_family_convention(fluidbed_family family);
+
+/* The closures of the library, presets included: their number, and the name of the index-th
+ * (NULL beyond the last). */
+FLUIDBED_C_API size_t fluidbed_closure_count(void);
+FLUIDBED_C_API const char* fluidbed_closure_name_at(size_t index);
+
+/* ---- Closures ---------------------------------------------------------------------------- */
+
+typedef struct fluidbed_closure fluidbed_closure;
+
+/* The closure called `name`, with its registered parameters, in *closure (to be destroyed by
+ * fluidbed_closure_destroy); FLUIDBED_UNKNOWN_NAME, with the known names in the message, where
+ * there is none. */
+FLUIDBED_C_API fluidbed_status fluidbed_closure_create(const char* name, fluidbed_closure** closure, fluidbed_error* error);
+
+/* A copy of `closure`, its parameters included; NULL where out of memory. */
+FLUIDBED_C_API fluidbed_closure* fluidbed_closure_copy(const fluidbed_closure* closure);
+
+FLUIDBED_C_API void fluidbed_closure_destroy(fluidbed_closure* closure);
+
+FLUIDBED_C_API fluidbed_family fluidbed_closure_family(const fluidbed_closure* closure);
+
+/* The closure's run-time name and its reference (authors, year, journal, DOI); valid while the
+ * closure lives. */
+FLUIDBED_C_API const char* fluidbed_closure_name(const fluidbed_closure* closure);
+FLUIDBED_C_API const char* fluidbed_closure_reference(const fluidbed_closure* closure);
+
+/* The ranges the closure was fitted or derived for: their number, and the index-th quantity's
+ * name and bounds (FLUIDBED_INVALID_ARGUMENT beyond the last). Outside them the closure still
+ * returns its formula's value. */
+FLUIDBED_C_API size_t fluidbed_closure_validity_count(const fluidbed_closure* closure);
+FLUIDBED_C_API fluidbed_status fluidbed_closure_validity(const fluidbed_closure* closure, size_t index, const char** quantity,
+                                          double* min, double* max, fluidbed_error* error);
+
+/* The closure's parameters (snake_case names, angles in radians): their number, the index-th
+ * name (NULL beyond the last), a value by name, and setting one, validated at once:
+ * FLUIDBED_UNKNOWN_PARAMETER (listing the closure's parameters) or FLUIDBED_DOMAIN_ERROR (the
+ * closure unchanged). */
+FLUIDBED_C_API size_t fluidbed_closure_parameter_count(const fluidbed_closure* closure);
+FLUIDBED_C_API const char* fluidbed_closure_parameter_name(const fluidbed_closure* closure, size_t index);
+FLUIDBED_C_API fluidbed_status fluidbed_closure_get_parameter(const fluidbed_closure* closure, const char* name, double* value,
+                                               fluidbed_error* error);
+FLUIDBED_C_API fluidbed_status fluidbed_closure_set_parameter(fluidbed_closure* closure, const char* name, double value,
+                                               fluidbed_error* error);
+
+/* ---- Drag laws (FLUIDBED_DRAG_LAW) ------------------------------------------------------------ */
+
+/* The buoyancy convention of the host's momentum equations: classical, −φ ρ_f g (the papers'),
+ * or pressure gradient, −φ ∇p (OpenFOAM, MFiX model A, Fluent). For the same physics
+ * β_pressure_gradient = ε β_classical. */
+typedef enum fluidbed_buoyancy {
+  FLUIDBED_BUOYANCY_CLASSICAL = 0,
+  FLUIDBED_BUOYANCY_PRESSURE_GRADIENT = 1
+} fluidbed_buoyancy;
+
+/* beta[i] [kg m^-3 s^-1], the drag coefficient per unit volume of suspension in `convention`,
+ * at voidage[i] = ε ∈ (0, 1], slip[i] = |u_f − v_p| >= 0 [m/s], fluid_density[i] [kg/m^3],
+ * fluid_viscosity[i] [Pa s] and diameter[i] [m]; the drag force on the particles per unit volume
+ * is β (u_f − v_p). If not NULL: d_voidage[i] = ∂β/∂ε at fixed w, d_slip[i] = ∂β/∂w at fixed ε
+ * (+∞ at w = 0 for the laws with a fractional power of Re: the true derivative), and
+ * d_force_d_slip[i] = ∂(β w)/∂w, finite everywhere (β at w = 0), what an implicit solver
+ * linearises. */
+FLUIDBED_C_API fluidbed_status fluidbed_drag(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n,
+                              const double* voidage, const double* slip, const double* fluid_density,
+                              const double* fluid_viscosity, const double* diameter, double* beta, double* d_voidage,
+                              double* d_slip, double* d_force_d_slip, fluidbed_error* error);
+
+/* ---- Single spheres, settling, fluidization -------------------------------------------------- */
+
+/* FLUIDBED_SPHERE_DRAG_COEFFICIENT: cd_re[i] = C_D·Re at reynolds[i] = Re >= 0 and, if not NULL,
+ * d_reynolds[i] = d(C_D·Re)/dRe. */
+FLUIDBED_C_API fluidbed_status fluidbed_sphere_drag_coefficient(const fluidbed_closure* law, size_t n, const double* reynolds,
+                                                 double* cd_re, double* d_reynolds, fluidbed_error* error);
+
+/* FLUIDBED_TERMINAL_VELOCITY and FLUIDBED_MINIMUM_FLUIDIZATION: the Reynolds number (Re_t or
+ * Re_mf) at archimedes[i] = Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f² >= 0 and, if not NULL,
+ * d_archimedes[i] = dRe/dAr. */
+FLUIDBED_C_API fluidbed_status fluidbed_reynolds_of_archimedes(const fluidbed_closure* law, size_t n, const double* archimedes,
+                                                double* reynolds, double* d_archimedes, fluidbed_error* error);
+
+/* FLUIDBED_RICHARDSON_ZAKI_EXPONENT: n at argument[i], the terminal Reynolds number Re_t or the
+ * Archimedes number Ar as fluidbed_richardson_zaki_argument names it, and, if not NULL,
+ * d_argument[i] = dn/d(argument). */
+FLUIDBED_C_API fluidbed_status fluidbed_richardson_zaki_exponent(const fluidbed_closure* law, size_t n, const double* argument,
+                                                  double* exponent, double* d_argument, fluidbed_error* error);
+
+/* "terminal_reynolds" or "archimedes"; NULL for a closure of another family. */
+FLUIDBED_C_API const char* fluidbed_richardson_zaki_argument(const fluidbed_closure* law);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,305 @@
+// The C interface (bindings/c, fluidbed_c.h) against the C++ library it wraps: every row of the
+// reference tables of the families it offers, run through both, agrees bit for bit (values from
+// the checked entry points, derivatives from checked_with_derivatives); bad input gives the
+// checked API's error as a status, the failing cell and the same message, never a crash or a NaN
+// without a status; the catalogue, metadata and parameters are the registries'; one handle is
+// evaluated from several threads at once.
+#include <doctest/doctest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "fluidbed/registries.hpp"
+#include "fluidbed_c.h"
+#include "reference_table.hpp"
+
+namespace {
+
+using namespace fluidbed;
+
+struct ClosureDeleter {
+  void operator()(fluidbed_closure* c) const { fluidbed_closure_destroy(c); }
+};
+using Handle = std::unique_ptr<fluidbed_closure, ClosureDeleter>;
+
+Handle create(const std::string& name) {
+  fluidbed_closure* closure = nullptr;
+  fluidbed_error error{};
+  const fluidbed_status status = fluidbed_closure_create(name.c_str(), &closure, &error);
+  REQUIRE_MESSAGE(status == FLUIDBED_OK, error.message);
+  return Handle(closure);
+}
+
+// Equal bits (a NaN equals the same NaN): what "bit for bit" means.
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+constexpr fluidbed_buoyancy c_conventions[] = {FLUIDBED_BUOYANCY_CLASSICAL, FLUIDBED_BUOYANCY_PRESSURE_GRADIENT};
+
+}  // namespace
+
+TEST_CASE("C interface: every drag reference row, both conventions, value and derivatives bit for bit") {
+  const test::ReferenceTable table("drag_reference.csv");
+  // The table's rows by law, as arrays of cells (structure of arrays, as a host passes them).
+  struct Cells {
+    std::vector<double> voidage, slip, density, viscosity, diameter;
+  };
+  std::map<std::string, Cells> by_law;
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    Cells& c = by_law[table.text(row, "law")];
+    c.voidage.push_back(table.number(row, "voidage"));
+    c.slip.push_back(table.number(row, "slip"));
+    c.density.push_back(table.number(row, "fluid_density"));
+    c.viscosity.push_back(table.number(row, "fluid_viscosity"));
+    c.diameter.push_back(table.number(row, "diameter"));
+  }
+  CHECK(by_law.size() == drag::DragLaws::size);
+  std::size_t compared = 0;
+  for (const auto& [name, c] : by_law) {
+    CAPTURE(name);
+    const Handle law = create(name);
+    const drag::DragLaws::Variant cpp = drag::DragLaws::make(name);
+    const std::size_t n = c.voidage.size();
+    for (const fluidbed_buoyancy convention : c_conventions) {
+      const auto b = convention == FLUIDBED_BUOYANCY_CLASSICAL ? drag::Buoyancy::classical
+                                                               : drag::Buoyancy::pressure_gradient;
+      std::vector<double> beta(n), d_voidage(n), d_slip(n), d_force(n), beta_only(n);
+      fluidbed_error error{};
+      REQUIRE(fluidbed_drag(law.get(), convention, n, c.voidage.data(), c.slip.data(), c.density.data(),
+                            c.viscosity.data(), c.diameter.data(), beta.data(), d_voidage.data(), d_slip.data(),
+                            d_force.data(), &error) == FLUIDBED_OK);
+      REQUIRE(fluidbed_drag(law.get(), convention, n, c.voidage.data(), c.slip.data(), c.density.data(),
+                            c.viscosity.data(), c.diameter.data(), beta_only.data(), nullptr, nullptr, nullptr,
+                            &error) == FLUIDBED_OK);
+      for (std::size_t i = 0; i < n; ++i) {
+        const drag::DragState<double> state{c.voidage[i], c.slip[i], {c.density[i], c.viscosity[i]}, c.diameter[i]};
+        std::visit(
+            [&](const auto& l) {
+              const auto with = l.checked_with_derivatives(state);
+              CHECK(same_bits(beta[i], l.checked(state).in(b)));
+              CHECK(same_bits(beta_only[i], beta[i]));
+              CHECK(same_bits(d_voidage[i], with.in(b).d_voidage));
+              CHECK(same_bits(d_slip[i], with.in(b).d_slip));
+              CHECK(same_bits(d_force[i], with.force_slip_derivative(b)));
+            },
+            cpp);
+        ++compared;
+      }
+    }
+  }
+  CHECK(compared == 2 * table.size());
+}
+
+TEST_CASE("C interface: the sphere drag coefficients, terminal velocities, u_mf and Richardson-Zaki rows bit for bit") {
+  const test::ReferenceTable cd("cd_reference.csv");
+  for (std::size_t row = 0; row < cd.size(); ++row) {
+    const std::string name = cd.text(row, "law") + "Coefficient";
+    CAPTURE(name);
+    const Handle law = create(name);
+    const double re = cd.number(row, "reynolds");
+    double value = 0, slope = 0;
+    REQUIRE(fluidbed_sphere_drag_coefficient(law.get(), 1, &re, &value, &slope, nullptr) == FLUIDBED_OK);
+    std::visit(
+        [&](const auto& l) {
+          CHECK(same_bits(value, l.checked(re)));
+          CHECK(same_bits(slope, l.checked_with_derivatives(re).d_reynolds));
+        },
+        single_particle::DragCoefficients::make(name));
+  }
+
+  const test::ReferenceTable settling("settling_reference.csv");
+  // quantity -> (closure, the parameter the table's param2 sets, if any)
+  const std::map<std::string, std::pair<std::string, std::string>> closures{
+      {"rz_exponent_mazzei", {"MazzeiExponent", ""}},
+      {"rz_exponent_rowe1987", {"RoweExponent", ""}},
+      {"rz_exponent_garside_aldibouni1977", {"GarsideAlDibouniExponent", ""}},
+      {"rz_exponent_khan_richardson1989", {"KhanRichardsonExponent", "wall_ratio"}},
+      {"rz_exponent_richardson_zaki1954", {"RichardsonZaki1954Exponent", "wall_ratio"}},
+      {"terminal_velocity_stokes", {"StokesTerminalVelocity", ""}},
+      {"terminal_velocity_newton", {"NewtonTerminalVelocity", ""}},
+      {"terminal_velocity_dallavalle", {"DallavalleTerminalVelocity", ""}},
+      {"terminal_velocity_schillernaumann", {"SchillerNaumannTerminalVelocity", ""}},
+      {"remf_ergun", {"ErgunMinimumFluidization", "voidage"}},
+      {"remf_wenyu1966", {"WenYuMinimumFluidization", ""}}};
+  std::size_t compared = 0;
+  for (std::size_t row = 0; row < settling.size(); ++row) {
+    const auto found = closures.find(settling.text(row, "quantity"));
+    if (found == closures.end()) continue;  // bed expansion and u_mf in m/s: not closures of the C interface
+    const auto& [name, parameter] = found->second;
+    CAPTURE(name);
+    const Handle law = create(name);
+    const double p1 = settling.number(row, "param1"), p2 = settling.number(row, "param2");
+    if (!parameter.empty()) REQUIRE(fluidbed_closure_set_parameter(law.get(), parameter.c_str(), p2, nullptr) == FLUIDBED_OK);
+    double x = p1;  // Re_t or Ar; the terminal-velocity rows give the fluid and the particles
+    if (name.ends_with("TerminalVelocity")) {
+      const Fluid<double> fluid{p1, p2};
+      const Particles<double> particles{settling.number(row, "param3"), settling.number(row, "param4")};
+      x = archimedes(fluid, particles);
+    }
+    double value = 0, slope = 0;
+    const auto compare = [&](const auto& cpp) {
+      std::visit(
+          [&](auto l) {
+            if (!parameter.empty()) set_parameter_checked(l, parameter, p2);
+            if constexpr (requires { l.checked_reynolds(x); }) {
+              REQUIRE(fluidbed_reynolds_of_archimedes(law.get(), 1, &x, &value, &slope, nullptr) == FLUIDBED_OK);
+              CHECK(same_bits(value, l.checked_reynolds(x)));
+              CHECK(same_bits(slope, l.checked_with_derivatives(x).d_archimedes));
+            } else {
+              REQUIRE(fluidbed_richardson_zaki_exponent(law.get(), 1, &x, &value, &slope, nullptr) == FLUIDBED_OK);
+              CHECK(same_bits(value, l.checked(x)));
+              CHECK(same_bits(slope, l.checked_with_derivatives(x).d_argument));
+            }
+          },
+          cpp);
+    };
+    if (auto t = single_particle::TerminalVelocities::find(name)) compare(*t);
+    else if (auto m = fluidization::MinimumFluidizations::find(name)) compare(*m);
+    else compare(settling::RichardsonZakiExponents::make(name));
+    ++compared;
+  }
+  CHECK(compared == 96);
+}
+
+TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {
+  const Handle law = create("SyamlalOBrien");
+  const double voidage[] = {0.5, std::numeric_limits<double>::quiet_NaN(), 0.5};
+  const double slip[] = {0.1, 0.1, 0.1}, density[] = {1.2, 1.2, 1.2}, viscosity[] = {1.8e-5, 1.8e-5, 1.8e-5},
+               diameter[] = {3e-4, 3e-4, 3e-4};
+  double beta[] = {-1, -1, -1};
+  fluidbed_error error{};
+  CHECK(fluidbed_drag(law.get(), FLUIDBED_BUOYANCY_CLASSICAL, 3, voidage, slip, density, viscosity, diameter, beta,
+                      nullptr, nullptr, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(error.status == FLUIDBED_DOMAIN_ERROR);
+  CHECK(error.index == 1);
+  CHECK(beta[0] > 0);     // written below the failing cell
+  CHECK(beta[2] == -1);   // not beyond it
+  // The message is the checked C++ call's.
+  std::string expected;
+  try {
+    drag::SyamlalOBrien{}.checked(drag::DragState<double>{voidage[1], 0.1, {1.2, 1.8e-5}, 3e-4});
+  } catch (const std::domain_error& e) {
+    expected = e.what();
+  }
+  CHECK(std::string(error.message) == expected);
+  CHECK(std::string(error.message).find("voidage") != std::string::npos);
+
+  // A NULL array, an unknown convention, a closure of another family, NULL handle.
+  CHECK(fluidbed_drag(law.get(), FLUIDBED_BUOYANCY_CLASSICAL, 3, voidage, nullptr, density, viscosity, diameter, beta,
+                      nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_drag(law.get(), static_cast<fluidbed_buoyancy>(7), 1, voidage, slip, density, viscosity, diameter,
+                      beta, nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  const Handle radial = create("CarnahanStarling");
+  CHECK(fluidbed_drag(radial.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, voidage, slip, density, viscosity, diameter, beta,
+                      nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(std::string(error.message) == "fluidbed: fluidbed_drag: CarnahanStarling is not a drag law");
+  CHECK(fluidbed_drag(nullptr, FLUIDBED_BUOYANCY_CLASSICAL, 1, voidage, slip, density, viscosity, diameter, beta,
+                      nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  // No cells: nothing read, nothing written, success (NULL arrays allowed).
+  CHECK(fluidbed_drag(law.get(), FLUIDBED_BUOYANCY_CLASSICAL, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                      nullptr, nullptr, nullptr, &error) == FLUIDBED_OK);
+  CHECK(std::string(error.message).empty());
+  // A negative Reynolds number, a negative Archimedes number; the error argument may be NULL.
+  const Handle cd = create("SchillerNaumannCoefficient");
+  const double negative = -1;
+  double out = 0;
+  CHECK(fluidbed_sphere_drag_coefficient(cd.get(), 1, &negative, &out, nullptr, nullptr) == FLUIDBED_DOMAIN_ERROR);
+  const Handle ut = create("SchillerNaumannTerminalVelocity");
+  CHECK(fluidbed_reynolds_of_archimedes(ut.get(), 1, &negative, &out, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(fluidbed_reynolds_of_archimedes(cd.get(), 1, &negative, &out, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+
+  // Unknown names.
+  fluidbed_closure* none = reinterpret_cast<fluidbed_closure*>(&error);
+  CHECK(fluidbed_closure_create("NoSuchLaw", &none, &error) == FLUIDBED_UNKNOWN_NAME);
+  CHECK(none == nullptr);
+  CHECK(std::string(error.message).starts_with("fluidbed: unknown closure 'NoSuchLaw'; known: StokesCoefficient, "));
+  CHECK(fluidbed_closure_create(nullptr, &none, &error) == FLUIDBED_INVALID_ARGUMENT);
+}
+
+TEST_CASE("C interface: the catalogue, metadata and parameters are the registries'") {
+  std::vector<std::string> names;
+  Registries::for_each([&](auto registry) {
+    for (const auto& law : decltype(registry)::type::all()) names.emplace_back(decltype(registry)::type::name_of(law));
+  });
+  REQUIRE(fluidbed_closure_count() == names.size());
+  for (std::size_t i = 0; i < names.size(); ++i) CHECK(names[i] == fluidbed_closure_name_at(i));
+  CHECK(fluidbed_closure_name_at(names.size()) == nullptr);
+  CHECK(std::string(fluidbed_family_what(FLUIDBED_DRAG_LAW)) == "drag law");
+  CHECK(std::string(fluidbed_family_convention(FLUIDBED_DRAG_LAW)) == drag::DragLaws::family::convention);
+  CHECK(fluidbed_family_what(FLUIDBED_FAMILY_COUNT) == nullptr);
+
+  const Handle wen_yu = create("WenYu1966");
+  CHECK(fluidbed_closure_family(wen_yu.get()) == FLUIDBED_DRAG_LAW);
+  CHECK(std::string(fluidbed_closure_reference(wen_yu.get())) ==
+        std::visit([](const auto& l) { return std::string(l.reference()); }, drag::DragLaws::make("WenYu1966")));
+  REQUIRE(fluidbed_closure_validity_count(wen_yu.get()) == 2);
+  const char* quantity = nullptr;
+  double low = 0, high = 0;
+  REQUIRE(fluidbed_closure_validity(wen_yu.get(), 0, &quantity, &low, &high, nullptr) == FLUIDBED_OK);
+  CHECK(std::string(quantity) == "voidage");
+  CHECK(low == 0.8);
+  CHECK(fluidbed_closure_validity(wen_yu.get(), 2, &quantity, &low, &high, nullptr) == FLUIDBED_INVALID_ARGUMENT);
+
+  REQUIRE(fluidbed_closure_parameter_count(wen_yu.get()) == 1);
+  CHECK(std::string(fluidbed_closure_parameter_name(wen_yu.get(), 0)) == "exponent");
+  double exponent = 0;
+  REQUIRE(fluidbed_closure_get_parameter(wen_yu.get(), "exponent", &exponent, nullptr) == FLUIDBED_OK);
+  CHECK(exponent == 2.7);
+  // A parameter set through the interface is the C++ law's: WenYu1966 at 2.65 is WenYuGidaspow.
+  Handle copy(fluidbed_closure_copy(wen_yu.get()));
+  REQUIRE(fluidbed_closure_set_parameter(copy.get(), "exponent", 2.65, nullptr) == FLUIDBED_OK);
+  const Handle gidaspow = create("WenYuGidaspow");
+  const double e = 0.7, w = 0.3, rho = 1.2, mu = 1.8e-5, d = 3e-4;
+  double a = 0, b = 0, original = 0;
+  fluidbed_drag(copy.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, &e, &w, &rho, &mu, &d, &a, nullptr, nullptr, nullptr, nullptr);
+  fluidbed_drag(gidaspow.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, &e, &w, &rho, &mu, &d, &b, nullptr, nullptr, nullptr,
+                nullptr);
+  fluidbed_drag(wen_yu.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, &e, &w, &rho, &mu, &d, &original, nullptr, nullptr,
+                nullptr, nullptr);
+  CHECK(same_bits(a, b));
+  CHECK(a != original);  // the copy is a copy
+
+  fluidbed_error error{};
+  CHECK(fluidbed_closure_set_parameter(copy.get(), "c1", 1.0, &error) == FLUIDBED_UNKNOWN_PARAMETER);
+  CHECK(std::string(error.message) == "fluidbed: WenYu1966 has no parameter 'c1'; its parameters: exponent");
+  const Handle syamlal = create("SyamlalOBrien");
+  CHECK(fluidbed_closure_set_parameter(syamlal.get(), "c1", -1.0, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(std::string(error.message) ==
+        "fluidbed::SyamlalOBrien: argument 'c1' = -1 is out of domain (must be finite and > 0)");
+  double c1 = 0;
+  CHECK(fluidbed_closure_get_parameter(syamlal.get(), "c1", &c1, nullptr) == FLUIDBED_OK);
+  CHECK(c1 == 0.8);  // unchanged
+  CHECK(std::string(fluidbed_status_name(FLUIDBED_DOMAIN_ERROR)) == "FLUIDBED_DOMAIN_ERROR");
+}
+
+TEST_CASE("C interface: one handle evaluated from 8 threads at once gives the serial results") {
+  const Handle law = create("MazzeiLettieri");
+  constexpr std::size_t n = 4096;
+  std::vector<double> voidage(n), slip(n), density(n, 1.2), viscosity(n, 1.8e-5), diameter(n, 3e-4), serial(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    voidage[i] = 0.4 + 0.59 * static_cast<double>(i) / n;
+    slip[i] = 1e-3 * static_cast<double>(i % 97);
+  }
+  const auto evaluate = [&](double* beta) {
+    return fluidbed_drag(law.get(), FLUIDBED_BUOYANCY_PRESSURE_GRADIENT, n, voidage.data(), slip.data(),
+                         density.data(), viscosity.data(), diameter.data(), beta, nullptr, nullptr, nullptr, nullptr);
+  };
+  REQUIRE(evaluate(serial.data()) == FLUIDBED_OK);
+  std::vector<std::vector<double>> results(8, std::vector<double>(n));
+  std::vector<fluidbed_status> statuses(8);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < 8; ++t) threads.emplace_back([&, t] { statuses[t] = evaluate(results[t].data()); });
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t t = 0; t < 8; ++t) {
+    CHECK(statuses[t] == FLUIDBED_OK);
+    CHECK(std::memcmp(results[t].data(), serial.data(), n * sizeof(double)) == 0);
+  }
+}
