@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Builds tests/consumer against fluidbed in every supported way and runs it:
-#   package       `cmake --install build --prefix P` (the prefix chosen at install time, not at
+#   package       configured with the defaults and built (the C interface is compiled), then
+#                 `cmake --install build --prefix P` (the prefix chosen at install time, not at
 #                 configure time), the tree then moved elsewhere, and
-#                 find_package(fluidbed 0.1 CONFIG REQUIRED) from the new place
+#                 find_package(fluidbed 0.1 CONFIG REQUIRED) from the new place, for the C++
+#                 consumer and a C program through fluidbed::fluidbed_c
 #   subdirectory  add_subdirectory(<source tree>)
 #   fetchcontent  FetchContent_Declare(fluidbed SOURCE_DIR <source tree>)
 #   pkg-config    g++ $(pkg-config --cflags fluidbed) against the moved prefix (the .pc file
-#                 must be relocatable)
+#                 must be relocatable), and gcc with pkg-config's fluidbed_c for the C program
 #   drag only     configured and installed as on a machine with none of the optional packages
 #                 (no doctest, no Boost, no Eigen), then the drag + kinetic-theory consumer built
 #                 against it; the compiler's include trace must show neither Boost nor Eigen
@@ -18,8 +20,9 @@ rm -rf "$work"
 mkdir -p "$work"
 consumer="$source_dir/tests/consumer"
 
-echo "== configure with the defaults, install with --prefix, move the installed tree"
+echo "== configure with the defaults, build, install with --prefix, move the installed tree"
 cmake -S "$source_dir" -B "$work/fluidbed" -G Ninja -DFLUIDBED_BUILD_TESTS=OFF -DFLUIDBED_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$work/fluidbed" --target fluidbed_c >/dev/null
 cmake --install "$work/fluidbed" --prefix "$work/installed_here" >/dev/null
 mv "$work/installed_here" "$work/moved_there"
 prefix="$work/moved_there"
@@ -34,6 +37,8 @@ for way in package subdirectory fetchcontent; do
   cmake --build "$work/$way" >/dev/null
   "$work/$way/consumer"
 done
+# The C program found fluidbed::fluidbed_c in the moved package and runs with the library there.
+LD_LIBRARY_PATH="$(dirname "$(ls "$prefix"/lib*/libfluidbed_c.so)")" "$work/package/c_consumer"
 
 echo "== consumer: a version the package does not satisfy is refused"
 mkdir -p "$work/too_new_src"
@@ -55,6 +60,10 @@ esac
 # shellcheck disable=SC2086
 g++ $cflags "$consumer/main.cpp" -o "$work/pkgconfig_consumer"
 "$work/pkgconfig_consumer"
+# shellcheck disable=SC2046
+gcc -std=c11 $(pkg-config --cflags fluidbed_c) "$source_dir/tests/c/drag_from_c.c" $(pkg-config --libs fluidbed_c) -lm \
+    -o "$work/pkgconfig_c_consumer"
+LD_LIBRARY_PATH="$(pkg-config --variable=libdir fluidbed_c)" "$work/pkgconfig_c_consumer"
 
 echo "== consumer: drag and kinetic theory only, on a machine without doctest, Boost or Eigen"
 cmake -S "$source_dir" -B "$work/minimal" -G Ninja -DCMAKE_DISABLE_FIND_PACKAGE_doctest=ON \
