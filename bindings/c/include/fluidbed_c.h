@@ -176,6 +176,50 @@ FLUIDBED_C_API fluidbed_status fluidbed_richardson_zaki_exponent(const fluidbed_
 /* "terminal_reynolds" or "archimedes"; NULL for a closure of another family. */
 FLUIDBED_C_API const char* fluidbed_richardson_zaki_argument(const fluidbed_closure* law);
 
+/* ---- Kinetic theory of one class of particles ------------------------------------------------ */
+
+/* FLUIDBED_RADIAL_DISTRIBUTION (g0, dimensionless) and FLUIDBED_FRICTIONAL_PRESSURE (p_f [Pa] per
+ * unit volume of suspension): value[i] at the solids volume fraction solid_fraction[i] = φ ∈ [0, 1)
+ * and, if not NULL, d_solid_fraction[i] = d/dφ. */
+FLUIDBED_C_API fluidbed_status fluidbed_of_solid_fraction(const fluidbed_closure* law, size_t n,
+                                                          const double* solid_fraction, double* value,
+                                                          double* d_solid_fraction, fluidbed_error* error);
+
+/* FLUIDBED_GRANULAR_PRESSURE (p_s [Pa]), FLUIDBED_SHEAR_VISCOSITY (μ_s [Pa s]), FLUIDBED_BULK_VISCOSITY
+ * (λ_s [Pa s]), FLUIDBED_CONDUCTIVITY (κ_s [kg m^-1 s^-1]) and FLUIDBED_DISSIPATION (γ [W m^-3]), all
+ * per unit volume of suspension: value[i] = law(φ, Θ, g0(φ), material) at φ = solid_fraction[i],
+ * the granular temperature Θ = granular_temperature[i] = <C^2>/3 >= 0 [m^2 s^-2], g0 the radial
+ * distribution `radial` (a FLUIDBED_RADIAL_DISTRIBUTION closure) and the material {diameter[i] [m],
+ * solid_density[i] [kg m^-3], restitution[i] ∈ [0, 1]}. If not NULL, d_solid_fraction[i] = ∂/∂φ at
+ * fixed Θ, g0's slope included, and d_granular_temperature[i] = ∂/∂Θ at fixed φ. */
+FLUIDBED_C_API fluidbed_status fluidbed_constitutive(const fluidbed_closure* law, const fluidbed_closure* radial,
+                                                     size_t n, const double* solid_fraction,
+                                                     const double* granular_temperature, const double* diameter,
+                                                     const double* solid_density, const double* restitution,
+                                                     double* value, double* d_solid_fraction,
+                                                     double* d_granular_temperature, fluidbed_error* error);
+
+/* FLUIDBED_FRICTIONAL_VISCOSITY: μ_f [Pa s] per unit volume of suspension at the frictional
+ * pressure frictional_pressure[i] = p_f >= 0 [Pa] and the rate of strain, divergence[i] = ∇·u
+ * [s^-1] and contraction[i] = D':D' >= 0 [s^-2] (D' the deviatoric rate of strain); if not NULL,
+ * d_frictional_pressure[i] = ∂μ_f/∂p_f. */
+FLUIDBED_C_API fluidbed_status fluidbed_frictional_viscosity(const fluidbed_closure* law, size_t n,
+                                                             const double* frictional_pressure,
+                                                             const double* divergence, const double* contraction,
+                                                             double* viscosity, double* d_frictional_pressure,
+                                                             fluidbed_error* error);
+
+/* FLUIDBED_FRICTIONAL_STRESS: the frictional pressure p_f [Pa] and viscosity μ_f [Pa s] per unit
+ * volume of suspension as one law of (φ, Θ, d, rate of strain); if not NULL, d_pressure[i] =
+ * ∂p_f/∂φ and d_viscosity[i] = ∂μ_f/∂φ, at fixed Θ and rate of strain. */
+FLUIDBED_C_API fluidbed_status fluidbed_frictional_stress(const fluidbed_closure* law, size_t n,
+                                                          const double* solid_fraction,
+                                                          const double* granular_temperature,
+                                                          const double* diameter, const double* divergence,
+                                                          const double* contraction, double* pressure,
+                                                          double* viscosity, double* d_pressure, double* d_viscosity,
+                                                          fluidbed_error* error);
+
 #ifdef __cplusplus
 }
 #endif
