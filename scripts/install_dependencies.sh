@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages fluidbed's build, tests, benchmarks and reference
 # generators need (clang and libclang-rt-dev: libFuzzer for fuzz/ and the sanitizer build; doxygen,
-# graphviz and libjs-mathjax: the API reference), skipping those already
-# present. Run as root (or with sudo available).
+# graphviz and libjs-mathjax: the API reference; gfortran: the Fortran module over the C
+# interface), skipping those already present. Run as root (or with sudo available).
 set -euo pipefail
 
 packages=(cmake ninja-build g++ libeigen3-dev libboost-dev libboost-math-dev doctest-dev libbenchmark-dev
-          python3 python3-mpmath gnuplot-nox pkgconf clang libclang-rt-dev doxygen graphviz libjs-mathjax)
+          python3 python3-mpmath gnuplot-nox pkgconf clang libclang-rt-dev doxygen graphviz libjs-mathjax gfortran)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds tests/consumer against fluidbed in every supported way and runs it:
-#   package       configured with the defaults and built (the C interface is compiled), then
+#   package       configured with the defaults and built (the C interface and the Fortran module are
+#                 compiled, and the OpenFOAM plugin where OpenFOAM is found), then
 #                 `cmake --install build --prefix P` (the prefix chosen at install time, not at
 #                 configure time), the tree then moved elsewhere, and
 #                 find_package(fluidbed 0.1 CONFIG REQUIRED) from the new place, for the C++
@@ -9,6 +10,7 @@
 #   fetchcontent  FetchContent_Declare(fluidbed SOURCE_DIR <source tree>)
 #   pkg-config    g++ $(pkg-config --cflags fluidbed) against the moved prefix (the .pc file
 #                 must be relocatable), and gcc with pkg-config's fluidbed_c for the C program
+#   Fortran       gfortran with the installed module fluidbed.mod and libraries (where built)
 #   drag only     configured and installed as on a machine with none of the optional packages
 #                 (no doctest, no Boost, no Eigen), then the drag + kinetic-theory consumer built
 #                 against it; the compiler's include trace must show neither Boost nor Eigen
@@ -22,7 +24,7 @@ consumer="$source_dir/tests/consumer"
 
 echo "== configure with the defaults, build, install with --prefix, move the installed tree"
 cmake -S "$source_dir" -B "$work/fluidbed" -G Ninja -DFLUIDBED_BUILD_TESTS=OFF -DFLUIDBED_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build "$work/fluidbed" --target fluidbed_c >/dev/null
+cmake --build "$work/fluidbed" >/dev/null
 cmake --install "$work/fluidbed" --prefix "$work/installed_here" >/dev/null
 mv "$work/installed_here" "$work/moved_there"
 prefix="$work/moved_there"
@@ -64,6 +66,14 @@ g++ $cflags "$consumer/main.cpp" -o "$work/pkgconfig_consumer"
 gcc -std=c11 $(pkg-config --cflags fluidbed_c) "$source_dir/tests/c/drag_from_c.c" $(pkg-config --libs fluidbed_c) -lm \
     -o "$work/pkgconfig_c_consumer"
 LD_LIBRARY_PATH="$(pkg-config --variable=libdir fluidbed_c)" "$work/pkgconfig_c_consumer"
+
+if [ -f "$prefix/include/fluidbed.mod" ]; then
+  echo "== consumer: the Fortran module from the moved prefix (the MFiX-shaped example)"
+  libdir=$(dirname "$(ls "$prefix"/lib*/libfluidbed_c.so)")
+  gfortran -I"$prefix/include" "$source_dir/examples/fortran/mfix_usr_drag.f90" -L"$libdir" -lfluidbed_fortran \
+           -lfluidbed_c -o "$work/fortran_consumer"
+  LD_LIBRARY_PATH="$libdir" "$work/fortran_consumer" | tail -1
+fi
 
 echo "== consumer: drag and kinetic theory only, on a machine without doctest, Boost or Eigen"
 cmake -S "$source_dir" -B "$work/minimal" -G Ninja -DCMAKE_DISABLE_FIND_PACKAGE_doctest=ON \
