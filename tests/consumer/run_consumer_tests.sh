@@ -70,7 +70,7 @@ LD_LIBRARY_PATH="$(pkg-config --variable=libdir fluidbed_c)" "$work/pkgconfig_c_
 if [ -f "$prefix/include/fluidbed.mod" ]; then
   echo "== consumer: the Fortran module from the moved prefix (the MFiX-shaped example)"
   libdir=$(dirname "$(ls "$prefix"/lib*/libfluidbed_c.so)")
-  gfortran -I"$prefix/include" "$source_dir/examples/fortran/mfix_usr_drag.f90" -L"$libdir" -lfluidbed_fortran \
+  gfortran -I"$prefix/include" -J "$work" "$source_dir/examples/fortran/mfix_usr_drag.f90" -L"$libdir" -lfluidbed_fortran \
            -lfluidbed_c -o "$work/fortran_consumer"
   LD_LIBRARY_PATH="$libdir" "$work/fortran_consumer" | tail -1
 fi
