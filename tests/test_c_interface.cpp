@@ -103,6 +103,48 @@ TEST_CASE("C interface: every drag reference row, both conventions, value and de
   CHECK(compared == 2 * table.size());
 }
 
+TEST_CASE("C interface: in float, the drag reference states and the kinetic-theory rows bit for bit with the C++ float calls") {
+  const test::ReferenceTable table("drag_reference.csv");
+  std::size_t compared = 0;
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    const std::string name = table.text(row, "law");
+    const auto f = [&](const char* column) { return static_cast<float>(table.number(row, column)); };
+    const float voidage = f("voidage"), slip = f("slip"), density = f("fluid_density"),
+                viscosity = f("fluid_viscosity"), diameter = f("diameter");
+    const drag::DragState<float> state{voidage, slip, {density, viscosity}, diameter};
+    const bool representable =  // a state whose β overflows float is the checked API's error in float too
+        std::visit([&](const auto& l) { return std::isfinite(l(state).classical()); }, drag::DragLaws::make(name));
+    if (!representable) continue;
+    const Handle law = create(name);
+    float beta = 0, d_voidage = 0;
+    fluidbed_error error{};
+    REQUIRE_MESSAGE(fluidbed_drag_f(law.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, &voidage, &slip, &density, &viscosity,
+                                    &diameter, &beta, &d_voidage, nullptr, nullptr, &error) == FLUIDBED_OK,
+                    error.message);
+    std::visit(
+        [&](const auto& l) {
+          CHECK(std::bit_cast<std::uint32_t>(beta) == std::bit_cast<std::uint32_t>(l.checked(state).classical()));
+          CHECK(std::bit_cast<std::uint32_t>(d_voidage) ==
+                std::bit_cast<std::uint32_t>(l.checked_with_derivatives(state).classical().d_voidage));
+        },
+        drag::DragLaws::make(name));
+    ++compared;
+  }
+  CHECK(compared > table.size() * 9 / 10);
+
+  const Handle viscosity = create("GidaspowViscosity"), radial = create("CarnahanStarling");
+  const float phi = 0.3f, theta = 0.01f, d = 3e-4f, rho = 2500.0f, e = 0.9f;
+  float value = 0, d_phi = 0, d_theta = 0;
+  REQUIRE(fluidbed_constitutive_f(viscosity.get(), radial.get(), 1, &phi, &theta, &d, &rho, &e, &value, &d_phi,
+                                  &d_theta, nullptr) == FLUIDBED_OK);
+  const kinetic_theory::GranularMaterial<float> material{d, rho, e};
+  const kinetic_theory::CarnahanStarling g0;
+  const auto with = kinetic_theory::GidaspowViscosity{}.checked_with_derivatives(phi, theta, g0, material);
+  CHECK(value == kinetic_theory::GidaspowViscosity{}.checked(phi, theta, g0.checked(phi), material));
+  CHECK(d_phi == with.d_solid_fraction);
+  CHECK(d_theta == with.d_granular_temperature);
+}
+
 TEST_CASE("C interface: the sphere drag coefficients, terminal velocities, u_mf and Richardson-Zaki rows bit for bit") {
   const test::ReferenceTable cd("cd_reference.csv");
   for (std::size_t row = 0; row < cd.size(); ++row) {
@@ -311,7 +353,7 @@ TEST_CASE("C interface: every one-class kinetic-theory reference row bit for bit
                               &error) == FLUIDBED_INVALID_ARGUMENT);
   CHECK(fluidbed_constitutive(viscosity.get(), viscosity.get(), 1, &phi, &theta, &d, &rho, &e, &out, nullptr, nullptr,
                               &error) == FLUIDBED_INVALID_ARGUMENT);
-  CHECK(std::string(error.message) == "fluidbed: fluidbed_constitutive: GidaspowViscosity is not a radial distribution");
+  CHECK(std::string(error.message) == "fluidbed: constitutive: GidaspowViscosity is not a radial distribution");
   const double negative_theta = -1;
   CHECK(fluidbed_constitutive(viscosity.get(), radial.get(), 1, &phi, &negative_theta, &d, &rho, &e, &out, nullptr,
                               nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
@@ -349,7 +391,7 @@ TEST_CASE("C interface: bad input gives the checked API's error, the failing cel
   const Handle radial = create("CarnahanStarling");
   CHECK(fluidbed_drag(radial.get(), FLUIDBED_BUOYANCY_CLASSICAL, 1, voidage, slip, density, viscosity, diameter, beta,
                       nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
-  CHECK(std::string(error.message) == "fluidbed: fluidbed_drag: CarnahanStarling is not a drag law");
+  CHECK(std::string(error.message) == "fluidbed: drag: CarnahanStarling is not a drag law");
   CHECK(fluidbed_drag(nullptr, FLUIDBED_BUOYANCY_CLASSICAL, 1, voidage, slip, density, viscosity, diameter, beta,
                       nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
   // No cells: nothing read, nothing written, success (NULL arrays allowed).

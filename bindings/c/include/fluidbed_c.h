@@ -154,6 +154,13 @@ FLUIDBED_C_API fluidbed_status fluidbed_drag(const fluidbed_closure* law, fluidb
                               const double* fluid_viscosity, const double* diameter, double* beta, double* d_voidage,
                               double* d_slip, double* d_force_d_slip, fluidbed_error* error);
 
+/* The same in float: the library evaluated in single precision (not double rounded to float). */
+FLUIDBED_C_API fluidbed_status fluidbed_drag_f(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n,
+                                               const float* voidage, const float* slip, const float* fluid_density,
+                                               const float* fluid_viscosity, const float* diameter, float* beta,
+                                               float* d_voidage, float* d_slip, float* d_force_d_slip,
+                                               fluidbed_error* error);
+
 /* ---- Single spheres, settling, fluidization -------------------------------------------------- */
 
 /* FLUIDBED_SPHERE_DRAG_COEFFICIENT: cd_re[i] = C_D·Re at reynolds[i] = Re >= 0 and, if not NULL,
@@ -198,6 +205,14 @@ FLUIDBED_C_API fluidbed_status fluidbed_constitutive(const fluidbed_closure* law
                                                      const double* solid_density, const double* restitution,
                                                      double* value, double* d_solid_fraction,
                                                      double* d_granular_temperature, fluidbed_error* error);
+
+/* The same in float. */
+FLUIDBED_C_API fluidbed_status fluidbed_constitutive_f(const fluidbed_closure* law, const fluidbed_closure* radial,
+                                                       size_t n, const float* solid_fraction,
+                                                       const float* granular_temperature, const float* diameter,
+                                                       const float* solid_density, const float* restitution,
+                                                       float* value, float* d_solid_fraction,
+                                                       float* d_granular_temperature, fluidbed_error* error);
 
 /* FLUIDBED_FRICTIONAL_VISCOSITY: μ_f [Pa s] per unit volume of suspension at the frictional
  * pressure frictional_pressure[i] = p_f >= 0 [Pa] and the rate of strain, divergence[i] = ∇·u

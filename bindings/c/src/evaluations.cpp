@@ -1,0 +1,145 @@
+// fluidbed — the C interface's evaluations over arrays (fluidbed_c.h), in double and (the _f
+// functions) in float: each the bindings' shared kernel (bindings/common/kernels.hpp) run through
+// `guarded`.
+#include <cstddef>
+#include <string>
+
+#include "closure_handle.hpp"
+#include "kernels.hpp"
+
+using namespace fluidbed::c_api;
+
+namespace {
+
+fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
+  switch (convention) {
+    case FLUIDBED_BUOYANCY_CLASSICAL: return fluidbed::drag::Buoyancy::classical;
+    case FLUIDBED_BUOYANCY_PRESSURE_GRADIENT: return fluidbed::drag::Buoyancy::pressure_gradient;
+  }
+  throw InvalidArgument("fluidbed: unknown fluidbed_buoyancy " + std::to_string(static_cast<int>(convention)));
+}
+
+template <class T>
+fluidbed_status drag_in(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n, const T* voidage,
+                        const T* slip, const T* density, const T* viscosity, const T* diameter, T* beta, T* d_voidage,
+                        T* d_slip, T* d_force_d_slip, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::drag(closure_of(law, "drag"), buoyancy_of(convention), n, voidage, slip, density, viscosity,
+                             diameter, beta, d_voidage, d_slip, d_force_d_slip);
+  });
+}
+
+template <class T>
+fluidbed_status constitutive_in(const fluidbed_closure* law, const fluidbed_closure* radial, size_t n, const T* phi,
+                                const T* theta, const T* diameter, const T* density, const T* restitution, T* value,
+                                T* d_phi, T* d_theta, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::constitutive(closure_of(law, "constitutive"), closure_of(radial, "constitutive"), n, phi, theta,
+                                     diameter, density, restitution, value, d_phi, d_theta);
+  });
+}
+
+}  // namespace
+
+extern "C" fluidbed_status fluidbed_drag(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n,
+                                         const double* voidage, const double* slip, const double* fluid_density,
+                                         const double* fluid_viscosity, const double* diameter, double* beta,
+                                         double* d_voidage, double* d_slip, double* d_force_d_slip,
+                                         fluidbed_error* error) {
+  return drag_in(law, convention, n, voidage, slip, fluid_density, fluid_viscosity, diameter, beta, d_voidage, d_slip,
+                 d_force_d_slip, error);
+}
+
+extern "C" fluidbed_status fluidbed_drag_f(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n,
+                                           const float* voidage, const float* slip, const float* fluid_density,
+                                           const float* fluid_viscosity, const float* diameter, float* beta,
+                                           float* d_voidage, float* d_slip, float* d_force_d_slip,
+                                           fluidbed_error* error) {
+  return drag_in(law, convention, n, voidage, slip, fluid_density, fluid_viscosity, diameter, beta, d_voidage, d_slip,
+                 d_force_d_slip, error);
+}
+
+extern "C" fluidbed_status fluidbed_sphere_drag_coefficient(const fluidbed_closure* law, size_t n,
+                                                            const double* reynolds, double* cd_re, double* d_reynolds,
+                                                            fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::sphere_drag_coefficient(closure_of(law, "sphere_drag_coefficient"), n, reynolds, cd_re,
+                                                d_reynolds);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_reynolds_of_archimedes(const fluidbed_closure* law, size_t n,
+                                                           const double* archimedes, double* reynolds,
+                                                           double* d_archimedes, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::reynolds_of_archimedes(closure_of(law, "reynolds_of_archimedes"), n, archimedes, reynolds,
+                                               d_archimedes);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_richardson_zaki_exponent(const fluidbed_closure* law, size_t n,
+                                                             const double* argument, double* exponent,
+                                                             double* d_argument, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::richardson_zaki_exponent(closure_of(law, "richardson_zaki_exponent"), n, argument, exponent,
+                                                 d_argument);
+  });
+}
+
+extern "C" const char* fluidbed_richardson_zaki_argument(const fluidbed_closure* law) {
+  // The laws' `argument` is a literal: static storage, terminated.
+  const std::string_view argument = law == nullptr ? std::string_view{} : fluidbed::bindings::richardson_zaki_argument(*law);
+  return argument.empty() ? nullptr : argument.data();
+}
+
+extern "C" fluidbed_status fluidbed_of_solid_fraction(const fluidbed_closure* law, size_t n,
+                                                      const double* solid_fraction, double* value,
+                                                      double* d_solid_fraction, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::of_solid_fraction(closure_of(law, "of_solid_fraction"), n, solid_fraction, value,
+                                          d_solid_fraction);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_constitutive(const fluidbed_closure* law, const fluidbed_closure* radial,
+                                                 size_t n, const double* solid_fraction,
+                                                 const double* granular_temperature, const double* diameter,
+                                                 const double* solid_density, const double* restitution,
+                                                 double* value, double* d_solid_fraction,
+                                                 double* d_granular_temperature, fluidbed_error* error) {
+  return constitutive_in(law, radial, n, solid_fraction, granular_temperature, diameter, solid_density, restitution,
+                         value, d_solid_fraction, d_granular_temperature, error);
+}
+
+extern "C" fluidbed_status fluidbed_constitutive_f(const fluidbed_closure* law, const fluidbed_closure* radial,
+                                                   size_t n, const float* solid_fraction,
+                                                   const float* granular_temperature, const float* diameter,
+                                                   const float* solid_density, const float* restitution, float* value,
+                                                   float* d_solid_fraction, float* d_granular_temperature,
+                                                   fluidbed_error* error) {
+  return constitutive_in(law, radial, n, solid_fraction, granular_temperature, diameter, solid_density, restitution,
+                         value, d_solid_fraction, d_granular_temperature, error);
+}
+
+extern "C" fluidbed_status fluidbed_frictional_viscosity(const fluidbed_closure* law, size_t n,
+                                                         const double* frictional_pressure, const double* divergence,
+                                                         const double* contraction, double* viscosity,
+                                                         double* d_frictional_pressure, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::frictional_viscosity(closure_of(law, "frictional_viscosity"), n, frictional_pressure,
+                                             divergence, contraction, viscosity, d_frictional_pressure);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_frictional_stress(const fluidbed_closure* law, size_t n,
+                                                      const double* solid_fraction,
+                                                      const double* granular_temperature, const double* diameter,
+                                                      const double* divergence, const double* contraction,
+                                                      double* pressure, double* viscosity, double* d_pressure,
+                                                      double* d_viscosity, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::frictional_stress(closure_of(law, "frictional_stress"), n, solid_fraction,
+                                          granular_temperature, diameter, divergence, contraction, pressure,
+                                          viscosity, d_pressure, d_viscosity);
+  });
+}

@@ -1,0 +1,224 @@
+// fluidbed — the bindings' evaluations over arrays of cells, in the scalar type T (float or
+// double): one dispatch on the closure per array, each cell through the closure's checked entry
+// points, so that the values are bit for bit those of law.checked(...) in T and the derivatives
+// those of law.checked_with_derivatives(...). A cell's failure is thrown as a CellError at its
+// index; each binding turns it into its own error (the C interface's status, a Python exception).
+// Outputs documented as optional may be null. Internal to the bindings: not installed.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+#include "any_closure.hpp"
+
+namespace fluidbed::bindings {
+
+// The families, by their place in fluidbed::Registries (the C interface's fluidbed_family).
+enum Family : std::size_t {
+  sphere_drag_coefficients = 0,
+  terminal_velocities = 1,
+  richardson_zaki_exponents = 2,
+  minimum_fluidizations = 3,
+  drag_laws = 4,
+  elastic_moduli = 5,
+  radial_distributions = 6,
+  mixture_radial_distributions = 7,
+  granular_pressures = 8,
+  shear_viscosities = 9,
+  bulk_viscosities = 10,
+  conductivities = 11,
+  dissipations = 12,
+  frictional_pressures = 13,
+  frictional_viscosities = 14,
+  frictional_stresses = 15,
+  gas_exchange_sources = 16,
+  solid_solid_drags = 17,
+};
+static_assert(std::is_same_v<RegistryOf<drag_laws>, drag::DragLaws> &&
+                  std::is_same_v<RegistryOf<frictional_stresses>, kinetic_theory::FrictionalStresses> &&
+                  family_count == 18,
+              "Family follows the order of fluidbed::Registries");
+
+// Throws InvalidArgument unless every required array is there (any may be null when n is 0).
+template <class... Pointer>
+void require_arrays(std::size_t n, std::string_view function, const Pointer*... arrays) {
+  if (n > 0 && ((arrays == nullptr) || ...))
+    throw InvalidArgument("fluidbed: " + std::string(function) + ": an input or required output array is NULL");
+}
+
+namespace detail {
+
+// value[i] = law.checked(x[i]) and, if derivative is not null, derivative_of(law, x[i]), for the
+// closures of one argument.
+template <class T, class Variant, class Value, class Derivative>
+void of_one_argument(const Variant& closure, std::size_t n, const T* x, T* value, T* derivative, const Value& value_of,
+                     const Derivative& derivative_of) {
+  std::visit(
+      [&](const auto& law) {
+        for_each_cell(n, [&](std::size_t i) {
+          value[i] = value_of(law, x[i]);
+          if (derivative != nullptr) derivative[i] = derivative_of(law, x[i]);
+        });
+      },
+      closure);
+}
+
+}  // namespace detail
+
+// β in `convention` of a drag law and, optionally, ∂β/∂ε, ∂β/∂w and ∂(βw)/∂w.
+template <class T>
+void drag(const NamedClosure& law, drag::Buoyancy convention, std::size_t n, const T* voidage, const T* slip,
+          const T* density, const T* viscosity, const T* diameter, T* beta, T* d_voidage, T* d_slip,
+          T* d_force_d_slip) {
+  const auto& closure = family_closure<drag_laws>(law, "drag");
+  require_arrays(n, "drag", voidage, slip, density, viscosity, diameter, beta);
+  const bool derivatives = d_voidage != nullptr || d_slip != nullptr || d_force_d_slip != nullptr;
+  std::visit(
+      [&](const auto& l) {
+        for_each_cell(n, [&](std::size_t i) {
+          const drag::DragState<T> state{voidage[i], slip[i], {density[i], viscosity[i]}, diameter[i]};
+          beta[i] = l.checked(state).in(convention);
+          if (!derivatives) return;
+          const auto with = l.checked_with_derivatives(state);
+          const auto d = with.in(convention);
+          if (d_voidage != nullptr) d_voidage[i] = d.d_voidage;
+          if (d_slip != nullptr) d_slip[i] = d.d_slip;
+          if (d_force_d_slip != nullptr) d_force_d_slip[i] = with.force_slip_derivative(convention);
+        });
+      },
+      closure);
+}
+
+// C_D·Re of a sphere at Re, and d(C_D·Re)/dRe.
+template <class T>
+void sphere_drag_coefficient(const NamedClosure& law, std::size_t n, const T* reynolds, T* cd_re, T* d_reynolds) {
+  const auto& closure = family_closure<sphere_drag_coefficients>(law, "sphere_drag_coefficient");
+  require_arrays(n, "sphere_drag_coefficient", reynolds, cd_re);
+  detail::of_one_argument(
+      closure, n, reynolds, cd_re, d_reynolds, [](const auto& l, T re) { return l.checked(re); },
+      [](const auto& l, T re) { return l.checked_with_derivatives(re).d_reynolds; });
+}
+
+// Re_t (terminal velocities) or Re_mf (minimum fluidization) at Ar, and dRe/dAr.
+template <class T>
+void reynolds_of_archimedes(const NamedClosure& law, std::size_t n, const T* archimedes, T* reynolds,
+                            T* d_archimedes) {
+  require_arrays(n, "reynolds_of_archimedes", archimedes, reynolds);
+  const auto value_of = [](const auto& l, T ar) { return l.checked_reynolds(ar); };
+  const auto derivative_of = [](const auto& l, T ar) { return l.checked_with_derivatives(ar).d_archimedes; };
+  if (law.family() == minimum_fluidizations)
+    detail::of_one_argument(std::get<minimum_fluidizations>(law.closure), n, archimedes, reynolds, d_archimedes,
+                            value_of, derivative_of);
+  else
+    detail::of_one_argument(family_closure<terminal_velocities>(law, "reynolds_of_archimedes"), n, archimedes,
+                            reynolds, d_archimedes, value_of, derivative_of);
+}
+
+// The Richardson–Zaki exponent n at Re_t or Ar (the law's `argument`), and dn/dx.
+template <class T>
+void richardson_zaki_exponent(const NamedClosure& law, std::size_t n, const T* argument, T* exponent,
+                              T* d_argument) {
+  const auto& closure = family_closure<richardson_zaki_exponents>(law, "richardson_zaki_exponent");
+  require_arrays(n, "richardson_zaki_exponent", argument, exponent);
+  detail::of_one_argument(
+      closure, n, argument, exponent, d_argument, [](const auto& l, T x) { return l.checked(x); },
+      [](const auto& l, T x) { return l.checked_with_derivatives(x).d_argument; });
+}
+
+// "terminal_reynolds" or "archimedes"; empty for a closure of another family.
+inline std::string_view richardson_zaki_argument(const NamedClosure& law) {
+  if (law.family() != richardson_zaki_exponents) return {};
+  return std::visit([](const auto& l) { return std::remove_cvref_t<decltype(l)>::argument; },
+                    std::get<richardson_zaki_exponents>(law.closure));
+}
+
+// g0(φ) of a radial distribution or p_f(φ) of a frictional pressure, and d/dφ.
+template <class T>
+void of_solid_fraction(const NamedClosure& law, std::size_t n, const T* phi, T* value, T* slope) {
+  require_arrays(n, "of_solid_fraction", phi, value);
+  const auto value_of = [](const auto& l, T x) { return l.checked(x); };
+  const auto slope_of = [](const auto& l, T x) { return l.checked_with_derivatives(x).d_solid_fraction; };
+  if (law.family() == frictional_pressures)
+    detail::of_one_argument(std::get<frictional_pressures>(law.closure), n, phi, value, slope, value_of, slope_of);
+  else
+    detail::of_one_argument(family_closure<radial_distributions>(law, "of_solid_fraction"), n, phi, value, slope,
+                            value_of, slope_of);
+}
+
+inline bool is_constitutive(std::size_t family) {
+  return family == granular_pressures || family == shear_viscosities || family == bulk_viscosities ||
+         family == conductivities || family == dissipations;
+}
+
+// law(φ, Θ, g0(φ), material) with the radial distribution `radial`, and ∂/∂φ (through g0 as
+// well) and ∂/∂Θ.
+template <class T>
+void constitutive(const NamedClosure& law, const NamedClosure& radial, std::size_t n, const T* phi, const T* theta,
+                  const T* diameter, const T* solid_density, const T* restitution, T* value, T* d_phi, T* d_theta) {
+  if (!is_constitutive(law.family()))
+    throw InvalidArgument("fluidbed: constitutive: " + law.name + " is not a law of (phi, Theta, g0, material)");
+  const auto& rdf = family_closure<radial_distributions>(radial, "constitutive");
+  require_arrays(n, "constitutive", phi, theta, diameter, solid_density, restitution, value);
+  const bool derivatives = d_phi != nullptr || d_theta != nullptr;
+  std::visit(
+      [&](const auto& g0) {
+        visit_closure(law.closure, [&]<class Law>(const Law& l) {
+          if constexpr (std::is_base_of_v<kinetic_theory::ConstitutiveLaw<Law>, Law>) {
+            for_each_cell(n, [&](std::size_t i) {
+              const kinetic_theory::GranularMaterial<T> material{diameter[i], solid_density[i], restitution[i]};
+              value[i] = l.checked(phi[i], theta[i], g0.checked(phi[i]), material);
+              if (!derivatives) return;
+              const auto d = l.checked_with_derivatives(phi[i], theta[i], g0, material);
+              if (d_phi != nullptr) d_phi[i] = d.d_solid_fraction;
+              if (d_theta != nullptr) d_theta[i] = d.d_granular_temperature;
+            });
+          }
+        });
+      },
+      rdf);
+}
+
+// μ_f(p_f, rate of strain) and ∂μ_f/∂p_f.
+template <class T>
+void frictional_viscosity(const NamedClosure& law, std::size_t n, const T* pressure, const T* divergence,
+                          const T* contraction, T* viscosity, T* d_pressure) {
+  const auto& closure = family_closure<frictional_viscosities>(law, "frictional_viscosity");
+  require_arrays(n, "frictional_viscosity", pressure, divergence, contraction, viscosity);
+  std::visit(
+      [&](const auto& l) {
+        for_each_cell(n, [&](std::size_t i) {
+          const kinetic_theory::StrainRate<T> rate{divergence[i], contraction[i]};
+          viscosity[i] = l.checked(pressure[i], rate);
+          if (d_pressure != nullptr) d_pressure[i] = l.checked_with_derivatives(pressure[i], rate).d_frictional_pressure;
+        });
+      },
+      closure);
+}
+
+// p_f and μ_f of a frictional stress law of (φ, Θ, d, rate of strain), and their ∂/∂φ.
+template <class T>
+void frictional_stress(const NamedClosure& law, std::size_t n, const T* phi, const T* theta, const T* diameter,
+                       const T* divergence, const T* contraction, T* pressure, T* viscosity, T* d_pressure,
+                       T* d_viscosity) {
+  const auto& closure = family_closure<frictional_stresses>(law, "frictional_stress");
+  require_arrays(n, "frictional_stress", phi, theta, diameter, divergence, contraction, pressure, viscosity);
+  std::visit(
+      [&](const auto& l) {
+        for_each_cell(n, [&](std::size_t i) {
+          const kinetic_theory::StrainRate<T> rate{divergence[i], contraction[i]};
+          const auto stress = l.checked(phi[i], theta[i], diameter[i], rate);
+          pressure[i] = stress.pressure;
+          viscosity[i] = stress.viscosity;
+          if (d_pressure == nullptr && d_viscosity == nullptr) return;
+          const auto d = l.checked_with_derivatives(phi[i], theta[i], diameter[i], rate);
+          if (d_pressure != nullptr) d_pressure[i] = d.pressure.d_solid_fraction;
+          if (d_viscosity != nullptr) d_viscosity[i] = d.viscosity.d_solid_fraction;
+        });
+      },
+      closure);
+}
+
+}  // namespace fluidbed::bindings
