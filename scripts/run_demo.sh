@@ -17,6 +17,8 @@
 #   quadrature_vs_size_distribution  2-, 3-, 4-node quadratures of a log-normal and a sieve PSD
 #   seed003_tables_1_2               seed 003 Tables 1–2: moments and published quadratures, and
 #                                    the band of rules the printed digits allow
+# the Python example (examples/python/voidage_ratio.py): the same quantity through the Python
+# package, in the few lines of NumPy and Matplotlib a user would write;
 # and the OpenFOAM demonstration (scripts/run_openfoam_demo.sh): OpenFOAM's fluidisedBed tutorial
 # with four drag laws through the plugin, pressure drop and bed height against time.
 # The plots (PNG, with their gnuplot scripts and data) are written to build/release/plots and
@@ -39,6 +41,12 @@ for example in "${examples[@]}"; do
   echo "==== $example"
   ./build/release/examples/"$example" "$plots" || failed+=("$example")
 done
+
+echo
+echo "==== Python: the voidage ratio of four drag laws (examples/python/voidage_ratio.py)"
+cmake -S . -B build/release -DFLUIDBED_BUILD_PYTHON=ON >/dev/null
+cmake --build build/release -j "$(nproc)" --target fluidbed_python
+PYTHONPATH=build/release/python /usr/bin/python3 examples/python/voidage_ratio.py "$plots" || failed+=("Python example")
 
 echo
 echo "==== OpenFOAM: the fluidisedBed tutorial with four drag laws"

@@ -24,8 +24,9 @@ fi
 #              use their own compilers and flags and so run once, and the OpenFOAM plugin's runs
 #              of the fluidisedBed tutorial (label openfoam), which run OpenFOAM's own binaries
 #   sanitize   clang++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors
-#              (the second compiler on the whole suite); without the OpenFOAM plugin and without the
-#              Fortran module (gfortran's programs cannot load clang's sanitizer runtime)
+#              (the second compiler on the whole suite); without the OpenFOAM plugin, the Fortran
+#              module and the Python package (gfortran's programs and Debian's Python cannot load
+#              clang's sanitizer runtime)
 #   optimized  g++, Release (-O3) for the machine it runs on (-march=native), warnings as errors;
 #              without the OpenFOAM plugin
 #   plain      exactly what README.md tells a user: `cmake -DCMAKE_BUILD_TYPE=Release`, the default
@@ -43,7 +44,8 @@ for config in debug sanitize optimized plain; do
   case $config in
     debug) options+=(-DCMAKE_BUILD_TYPE=Debug) selection=() ;;
     sanitize) options+=(-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang
-                        -DFLUIDBED_SANITIZE=ON -DFLUIDBED_BUILD_OPENFOAM=OFF -DFLUIDBED_BUILD_FORTRAN=OFF) ;;
+                        -DFLUIDBED_SANITIZE=ON -DFLUIDBED_BUILD_OPENFOAM=OFF -DFLUIDBED_BUILD_FORTRAN=OFF
+                        -DFLUIDBED_BUILD_PYTHON=OFF) ;;
     optimized) options+=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS=-march=native $gcc12_false_positives"
                          -DFLUIDBED_BUILD_OPENFOAM=OFF) ;;
     plain) options=(-DCMAKE_BUILD_TYPE=Release) ;;

@@ -1,0 +1,325 @@
+"""fluidbed: closures for Eulerian models of fluidized suspensions, from Python.
+
+Every closure of the C++ library, chosen by its run-time name (``fluidbed.closure("MazzeiLettieri")``)
+or by its class (``fluidbed.drag_laws.MazzeiLettieri()``), evaluated over NumPy arrays: any shape,
+broadcast against each other, float64 (or float32 where every array is float32, the library then
+evaluated in single precision), derivatives on request. The values are bit for bit the C++
+library's checked calls. ``help()`` of a closure shows its equation, its family's convention,
+its validity and its reference.
+
+Errors are exceptions carrying the C++ library's message: ``DomainError`` for an argument or
+parameter outside its domain (with ``index``, the first failing cell in the broadcast shape),
+``UnknownName``, ``UnknownParameter``, ``InvalidArgument``; all are ``fluidbed.Error``, a
+``ValueError``.
+
+    >>> import fluidbed, numpy as np
+    >>> law = fluidbed.drag_laws.MazzeiLettieri()
+    >>> law.beta(np.linspace(0.4, 0.9, 6), 0.3, 1.2, 1.8e-5, 3e-4, convention="pressure_gradient")
+"""
+
+from collections import namedtuple
+from types import SimpleNamespace
+
+import numpy as np
+
+from . import _fluidbed
+from ._closure_docs import SECTIONS as _SECTIONS
+
+__all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidArgument", "closure", "closure_names",
+           "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
+           "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
+           "FrictionalStress", "CONVENTIONS"]
+
+
+class Error(ValueError):
+    """An error of fluidbed, with the C++ library's message; ``index`` is the failing cell."""
+
+    index = None
+
+
+class DomainError(Error):
+    """An argument or parameter outside its domain, or a result that is not finite."""
+
+
+class InvalidArgument(Error):
+    """A closure of another family than the function needs, or arrays that do not broadcast."""
+
+
+class UnknownName(Error, LookupError):
+    """No closure by that name."""
+
+
+class UnknownParameter(Error, LookupError):
+    """The closure has no parameter by that name."""
+
+
+_fluidbed.set_error_types({"Error": Error, "DomainError": DomainError, "InvalidArgument": InvalidArgument,
+                           "UnknownName": UnknownName, "UnknownParameter": UnknownParameter})
+
+#: The buoyancy conventions: "classical" (−φ ρ_f g, the papers') and "pressure_gradient" (−φ ∇p:
+#: OpenFOAM, MFiX model A, Fluent). For the same physics β_pressure_gradient = ε β_classical.
+CONVENTIONS = ("classical", "pressure_gradient")
+
+Drag = namedtuple("Drag", "beta d_voidage d_slip d_force_d_slip")
+WithSlope = namedtuple("WithSlope", "value d_solid_fraction")
+WithDerivative = namedtuple("WithDerivative", "value derivative")
+Constitutive = namedtuple("Constitutive", "value d_solid_fraction d_granular_temperature")
+Stress = namedtuple("Stress", "pressure viscosity d_pressure d_viscosity")
+
+
+def closure_names():
+    """The run-time names of every closure of the library, presets included."""
+    return list(_fluidbed.closure_names())
+
+
+def _prepare(arrays):
+    """The arrays broadcast against each other, as contiguous flat arrays of one dtype, and the shape."""
+    arrays = [np.asarray(a) for a in arrays]
+    dtype = np.float32 if all(a.dtype == np.float32 for a in arrays) else np.float64
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    except ValueError as e:
+        raise InvalidArgument(f"fluidbed: the arrays do not broadcast against each other: {e}") from None
+    flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=dtype).reshape(-1) for a in arrays]
+    return dtype, shape, flat
+
+
+def _evaluate(kernel, closures, arrays, derivatives, *flags):
+    """kernel(*closures, *flat arrays, *flags, derivatives) in the arrays' dtype, reshaped; a failing
+    cell's index is given in the broadcast shape."""
+    dtype, shape, flat = _prepare(arrays)
+    module = _fluidbed.float32 if dtype == np.float32 else _fluidbed.float64
+    try:
+        results = getattr(module, kernel)(*closures, *flags, *flat, bool(derivatives))
+    except Error as e:
+        if e.index is not None:
+            e.index = np.unravel_index(e.index, shape) if shape else ()
+        raise
+    return [None if r is None else r.reshape(shape) for r in results]
+
+
+class Closure:
+    """A closure of the library (base of the families' classes)."""
+
+    family = None  # the family's index in the library's list of registries
+
+    def __init__(self, name, **parameters):
+        self._closure = _fluidbed.NamedClosure(name)
+        if self.family is not None and self._closure.family != self.family:
+            raise InvalidArgument(f"fluidbed: {name} is not a {_fluidbed.family_what(self.family)}")
+        self.set(**parameters)
+
+    @property
+    def name(self):
+        return self._closure.name
+
+    @property
+    def reference(self):
+        return self._closure.reference
+
+    @property
+    def family_what(self):
+        """What the family's closures are, e.g. "drag law"."""
+        return _fluidbed.family_what(self._closure.family)
+
+    @property
+    def convention(self):
+        """The family's convention: the quantity, its units and sign, the arguments' definitions."""
+        return _fluidbed.family_convention(self._closure.family)
+
+    @property
+    def validity(self):
+        """{quantity: (min, max)}: the ranges the closure was fitted or derived for."""
+        return {q: (low, high) for q, low, high in self._closure.validity}
+
+    @property
+    def parameters(self):
+        """{name: value} of the closure's parameters (snake_case; angles in radians)."""
+        return {n: self._closure.get_parameter(n) for n in self._closure.parameter_names}
+
+    def set(self, **parameters):
+        """Sets parameters by name, each validated at once (DomainError, the closure unchanged)."""
+        for name, value in parameters.items():
+            self._closure.set_parameter(name, float(value))
+        return self
+
+    def __repr__(self):
+        parameters = ", ".join(f"{k}={v!r}" for k, v in self.parameters.items())
+        return f"<fluidbed {self.family_what} {self.name}{' (' + parameters + ')' if parameters else ''}>"
+
+
+def _convention(convention):
+    if convention not in CONVENTIONS:
+        raise InvalidArgument(f"fluidbed: convention must be one of {CONVENTIONS}, not {convention!r}")
+    return convention == "pressure_gradient"
+
+
+class DragLaw(Closure):
+    family = 4
+
+    def beta(self, voidage, slip, fluid_density, fluid_viscosity, diameter, *, convention, derivatives=False):
+        """β [kg m⁻³ s⁻¹] per unit volume of suspension in ``convention`` ("classical" or
+        "pressure_gradient", required) at voidage ε, interstitial slip w = |u_f − v_p| [m/s], fluid
+        density [kg/m³] and viscosity [Pa s], particle diameter [m]; with ``derivatives`` a ``Drag``
+        of β, ∂β/∂ε, ∂β/∂w and ∂(βw)/∂w."""
+        pg = _convention(convention)
+        r = _evaluate("drag", [self._closure], [voidage, slip, fluid_density, fluid_viscosity, diameter],
+                      derivatives, pg)
+        return Drag(*r) if derivatives else r[0]
+
+
+class SphereDragCoefficient(Closure):
+    family = 0
+
+    def cd_re(self, reynolds, *, derivatives=False):
+        """C_D·Re of one sphere at Re = ρ_f w d/μ_f; with ``derivatives`` also d(C_D·Re)/dRe."""
+        r = _evaluate("sphere_drag_coefficient", [self._closure], [reynolds], derivatives)
+        return WithDerivative(*r) if derivatives else r[0]
+
+
+class ReynoldsOfArchimedes(Closure):
+    """Terminal velocities (Re_t) and minimum fluidization (Re_mf) as Re(Ar)."""
+
+    def reynolds(self, archimedes, *, derivatives=False):
+        """Re at Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f²; with ``derivatives`` also dRe/dAr."""
+        r = _evaluate("reynolds_of_archimedes", [self._closure], [archimedes], derivatives)
+        return WithDerivative(*r) if derivatives else r[0]
+
+
+class TerminalVelocity(ReynoldsOfArchimedes):
+    family = 1
+
+
+class MinimumFluidization(ReynoldsOfArchimedes):
+    family = 3
+
+
+class RichardsonZakiExponent(Closure):
+    family = 2
+
+    @property
+    def argument(self):
+        """"terminal_reynolds" (Re_t) or "archimedes" (Ar): what ``exponent`` takes."""
+        return self._closure.richardson_zaki_argument()
+
+    def exponent(self, argument, *, derivatives=False):
+        """n at Re_t or Ar (see ``argument``); with ``derivatives`` also dn/d(argument)."""
+        r = _evaluate("richardson_zaki_exponent", [self._closure], [argument], derivatives)
+        return WithDerivative(*r) if derivatives else r[0]
+
+
+class _OfSolidFraction(Closure):
+    def _of(self, solid_fraction, derivatives):
+        r = _evaluate("of_solid_fraction", [self._closure], [solid_fraction], derivatives)
+        return WithSlope(*r) if derivatives else r[0]
+
+
+class RadialDistribution(_OfSolidFraction):
+    family = 6
+
+    def g0(self, solid_fraction, *, derivatives=False):
+        """g0(φ); with ``derivatives`` also dg0/dφ."""
+        return self._of(solid_fraction, derivatives)
+
+
+class FrictionalPressure(_OfSolidFraction):
+    family = 13
+
+    def pressure(self, solid_fraction, *, derivatives=False):
+        """p_f(φ) [Pa]; with ``derivatives`` also dp_f/dφ."""
+        return self._of(solid_fraction, derivatives)
+
+
+class ConstitutiveLaw(Closure):
+    """Granular pressures, shear and bulk viscosities, conductivities, dissipation: law(φ, Θ, g0, material)."""
+
+    families = (8, 9, 10, 11, 12)
+
+    def __init__(self, name, **parameters):
+        super().__init__(name, **parameters)
+        if self._closure.family not in self.families:
+            raise InvalidArgument(f"fluidbed: {name} is not a law of (phi, Theta, g0, material)")
+
+    def __call__(self, solid_fraction, granular_temperature, diameter, solid_density, restitution, *, radial,
+                 derivatives=False):
+        """The law per unit volume of suspension at φ, Θ [m² s⁻²], d [m], ρ_s [kg/m³], e, with g0 the
+        radial distribution ``radial`` (a RadialDistribution or its name); with ``derivatives`` a
+        ``Constitutive`` of the value, ∂/∂φ (through g0 as well) and ∂/∂Θ."""
+        rdf = radial if isinstance(radial, RadialDistribution) else RadialDistribution(radial)
+        r = _evaluate("constitutive", [self._closure, rdf._closure],
+                      [solid_fraction, granular_temperature, diameter, solid_density, restitution], derivatives)
+        return Constitutive(*r) if derivatives else r[0]
+
+
+class FrictionalViscosity(Closure):
+    family = 14
+
+    def viscosity(self, frictional_pressure, divergence, contraction, *, derivatives=False):
+        """μ_f [Pa s] at p_f [Pa], ∇·u [s⁻¹] and D':D' [s⁻²]; with ``derivatives`` also ∂μ_f/∂p_f."""
+        r = _evaluate("frictional_viscosity", [self._closure], [frictional_pressure, divergence, contraction],
+                      derivatives)
+        return WithDerivative(*r) if derivatives else r[0]
+
+
+class FrictionalStress(Closure):
+    family = 15
+
+    def stress(self, solid_fraction, granular_temperature, diameter, divergence, contraction, *, derivatives=False):
+        """A ``Stress`` of p_f [Pa] and μ_f [Pa s] at (φ, Θ, d, ∇·u, D':D'); with ``derivatives`` also
+        their ∂/∂φ."""
+        return Stress(*_evaluate("frictional_stress", [self._closure],
+                                 [solid_fraction, granular_temperature, diameter, divergence, contraction],
+                                 derivatives))
+
+
+# The class of each family; the families without a class here are reachable for their metadata.
+_CLASS_OF_FAMILY = {0: SphereDragCoefficient, 1: TerminalVelocity, 2: RichardsonZakiExponent, 3: MinimumFluidization,
+                    4: DragLaw, 6: RadialDistribution, 13: FrictionalPressure, 14: FrictionalViscosity,
+                    15: FrictionalStress, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
+_NAMESPACES = {0: "sphere_drag_coefficients", 1: "terminal_velocities", 2: "richardson_zaki_exponents",
+               3: "minimum_fluidizations", 4: "drag_laws", 5: "elastic_moduli", 6: "radial_distributions",
+               7: "mixture_radial_distributions", 8: "granular_pressures", 9: "shear_viscosities",
+               10: "bulk_viscosities", 11: "conductivities", 12: "dissipations", 13: "frictional_pressures",
+               14: "frictional_viscosities", 15: "frictional_stresses", 16: "gas_exchange_sources",
+               17: "solid_solid_drags"}
+
+
+def _documentation(c):
+    """A closure's help: its equation (the docs' section), its family's convention, validity, reference."""
+    section = next((body for body in _SECTIONS if f'"{c.name}"' in body), "(no section in docs/closures)")
+    validity = "; ".join(f"{q} in [{low:g}, {high:g}]" for q, (low, high) in c.validity.items()) or "none stated"
+    parameters = ", ".join(f"{k} = {v:g}" for k, v in c.parameters.items()) or "none"
+    return (f"{c.name}: a {c.family_what} of fluidbed.\n\n{section.strip()}\n\n"
+            f"Convention: {c.convention}\n\nValidity: {validity}\n\nParameters: {parameters}\n\n"
+            f"Reference: {c.reference}\n")
+
+
+def _make_class(name, family):
+    base = _CLASS_OF_FAMILY.get(family, Closure)
+
+    def __init__(self, **parameters):
+        base.__init__(self, name, **parameters)
+
+    cls = type(name, (base,), {"__init__": __init__, "__module__": f"fluidbed.{_NAMESPACES[family]}"})
+    if base is Closure:
+        cls.family = family
+    cls.__doc__ = _documentation(_Probe(name))
+    return cls
+
+
+class _Probe(Closure):
+    """A closure of any family, for the documentation of the classes."""
+
+
+def closure(name, **parameters):
+    """The closure called ``name`` (any family), as an instance of its class, with ``parameters`` set."""
+    return getattr(globals()[_NAMESPACES[_fluidbed.NamedClosure(name).family]], name)(**parameters)
+
+
+for _f, _namespace in _NAMESPACES.items():
+    globals()[_namespace] = SimpleNamespace()
+for _name in _fluidbed.closure_names():
+    _family = _fluidbed.NamedClosure(_name).family
+    setattr(globals()[_NAMESPACES[_family]], _name, _make_class(_name, _family))
+__all__ += list(_NAMESPACES.values())
+del _f, _namespace, _name, _family

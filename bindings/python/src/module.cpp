@@ -1,0 +1,225 @@
+// fluidbed._fluidbed — the compiled part of the Python package (bindings/python/fluidbed): closures
+// by name with their metadata and parameters, and the bindings' shared array kernels
+// (bindings/common/kernels.hpp) over contiguous one-dimensional NumPy arrays of float64 or float32.
+// Broadcasting, shapes, conventions by name and the documentation are the pure-Python layer's.
+// Errors become fluidbed.Error subclasses carrying the C++ library's message (and, for a cell,
+// its flat index).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <exception>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "any_closure.hpp"
+#include "kernels.hpp"
+
+namespace py = pybind11;
+namespace fb = fluidbed::bindings;
+
+namespace {
+
+template <class T>
+using Array = py::array_t<T, py::array::c_style>;
+
+// The Python exception types, set by the package (fluidbed/__init__.py) at import; kept for the
+// interpreter's life (a static py::object would be released after the interpreter has ended).
+py::dict* error_types = nullptr;
+
+// Runs body with the GIL released; a cell's failure or the library's exception becomes the
+// package's exception of that kind, with the cell's flat index where there is one.
+template <class Body>
+void guarded(Body&& body) {
+  std::optional<std::size_t> index;
+  std::string message;
+  const char* kind = nullptr;
+  {
+    py::gil_scoped_release release;
+    try {
+      try {
+        body();
+        return;
+      } catch (const fb::CellError& cell) {
+        index = cell.index;
+        std::rethrow_exception(cell.cause);
+      }
+    } catch (const fb::UnknownName& e) {
+      kind = "UnknownName", message = e.what();
+    } catch (const fb::UnknownParameter& e) {
+      kind = "UnknownParameter", message = e.what();
+    } catch (const fb::InvalidArgument& e) {
+      kind = "InvalidArgument", message = e.what();
+    } catch (const std::domain_error& e) {
+      kind = "DomainError", message = e.what();
+    } catch (const std::exception& e) {
+      kind = "Error", message = e.what();
+    }
+  }
+  py::object error = (*error_types)[kind](message);
+  error.attr("index") = index ? py::cast(*index) : py::none();
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+  throw py::error_already_set();
+}
+
+template <class T>
+const T* data_of(const std::optional<Array<T>>& a) {
+  return a ? a->data() : nullptr;
+}
+
+// A new output array of n elements, or nothing where it is not asked for.
+template <class T>
+std::optional<Array<T>> output(py::ssize_t n, bool wanted) {
+  return wanted ? std::optional<Array<T>>(Array<T>(n)) : std::nullopt;
+}
+
+template <class T>
+T* data_of(std::optional<Array<T>>& a) {
+  return a ? a->mutable_data() : nullptr;
+}
+
+template <class T>
+py::tuple drag(const fb::NamedClosure& law, bool pressure_gradient, const Array<T>& voidage, const Array<T>& slip,
+               const Array<T>& density, const Array<T>& viscosity, const Array<T>& diameter, bool derivatives) {
+  const py::ssize_t n = voidage.size();
+  Array<T> beta(n);
+  auto d_voidage = output<T>(n, derivatives), d_slip = output<T>(n, derivatives), d_force = output<T>(n, derivatives);
+  const auto convention = pressure_gradient ? fluidbed::drag::Buoyancy::pressure_gradient
+                                            : fluidbed::drag::Buoyancy::classical;
+  T* out = beta.mutable_data();
+  guarded([&] {
+    fb::drag<T>(law, convention, static_cast<std::size_t>(n), voidage.data(), slip.data(), density.data(),
+                viscosity.data(), diameter.data(), out, data_of(d_voidage), data_of(d_slip), data_of(d_force));
+  });
+  return py::make_tuple(beta, d_voidage, d_slip, d_force);
+}
+
+template <class T>
+py::tuple constitutive(const fb::NamedClosure& law, const fb::NamedClosure& radial, const Array<T>& phi,
+                       const Array<T>& theta, const Array<T>& diameter, const Array<T>& density,
+                       const Array<T>& restitution, bool derivatives) {
+  const py::ssize_t n = phi.size();
+  Array<T> value(n);
+  auto d_phi = output<T>(n, derivatives), d_theta = output<T>(n, derivatives);
+  T* out = value.mutable_data();
+  guarded([&] {
+    fb::constitutive<T>(law, radial, static_cast<std::size_t>(n), phi.data(), theta.data(), diameter.data(),
+                        density.data(), restitution.data(), out, data_of(d_phi), data_of(d_theta));
+  });
+  return py::make_tuple(value, d_phi, d_theta);
+}
+
+// The closures of one argument: value and derivative.
+template <class T, class Kernel>
+py::tuple one_argument(const fb::NamedClosure& law, const Array<T>& x, bool derivatives, const Kernel& kernel) {
+  const py::ssize_t n = x.size();
+  Array<T> value(n);
+  auto slope = output<T>(n, derivatives);
+  T* out = value.mutable_data();
+  guarded([&] { kernel(law, static_cast<std::size_t>(n), x.data(), out, data_of(slope)); });
+  return py::make_tuple(value, slope);
+}
+
+template <class T>
+void define_kernels(py::module_& m) {
+  m.def("drag", &drag<T>);
+  m.def("constitutive", &constitutive<T>);
+  m.def("sphere_drag_coefficient", [](const fb::NamedClosure& law, const Array<T>& re, bool derivatives) {
+    return one_argument<T>(law, re, derivatives, fb::sphere_drag_coefficient<T>);
+  });
+  m.def("reynolds_of_archimedes", [](const fb::NamedClosure& law, const Array<T>& ar, bool derivatives) {
+    return one_argument<T>(law, ar, derivatives, fb::reynolds_of_archimedes<T>);
+  });
+  m.def("richardson_zaki_exponent", [](const fb::NamedClosure& law, const Array<T>& x, bool derivatives) {
+    return one_argument<T>(law, x, derivatives, fb::richardson_zaki_exponent<T>);
+  });
+  m.def("of_solid_fraction", [](const fb::NamedClosure& law, const Array<T>& phi, bool derivatives) {
+    return one_argument<T>(law, phi, derivatives, fb::of_solid_fraction<T>);
+  });
+  m.def("frictional_viscosity", [](const fb::NamedClosure& law, const Array<T>& pressure, const Array<T>& divergence,
+                                   const Array<T>& contraction, bool derivatives) {
+    const py::ssize_t n = pressure.size();
+    Array<T> value(n);
+    auto slope = output<T>(n, derivatives);
+    T* out = value.mutable_data();
+    guarded([&] {
+      fb::frictional_viscosity<T>(law, static_cast<std::size_t>(n), pressure.data(), divergence.data(),
+                                  contraction.data(), out, data_of(slope));
+    });
+    return py::make_tuple(value, slope);
+  });
+  m.def("frictional_stress", [](const fb::NamedClosure& law, const Array<T>& phi, const Array<T>& theta,
+                                const Array<T>& diameter, const Array<T>& divergence, const Array<T>& contraction,
+                                bool derivatives) {
+    const py::ssize_t n = phi.size();
+    Array<T> pressure(n), viscosity(n);
+    auto d_pressure = output<T>(n, derivatives), d_viscosity = output<T>(n, derivatives);
+    T *p = pressure.mutable_data(), *v = viscosity.mutable_data();
+    guarded([&] {
+      fb::frictional_stress<T>(law, static_cast<std::size_t>(n), phi.data(), theta.data(), diameter.data(),
+                               divergence.data(), contraction.data(), p, v, data_of(d_pressure), data_of(d_viscosity));
+    });
+    return py::make_tuple(pressure, viscosity, d_pressure, d_viscosity);
+  });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_fluidbed, m) {
+  m.doc() = "fluidbed's compiled kernels; use the package fluidbed.";
+  m.def("set_error_types", [](py::dict types) { error_types = new py::dict(std::move(types)); });
+
+  py::class_<fb::NamedClosure>(m, "NamedClosure")
+      .def(py::init([](const std::string& name) {
+        std::optional<fb::NamedClosure> made;
+        guarded([&] { made = fb::make_closure(name); });
+        return *made;
+      }))
+      .def_readonly("name", &fb::NamedClosure::name)
+      .def_readonly("reference", &fb::NamedClosure::reference)
+      .def_property_readonly("family", &fb::NamedClosure::family)
+      .def_property_readonly("validity",
+                             [](const fb::NamedClosure& c) {
+                               std::vector<std::tuple<std::string, double, double>> ranges;
+                               for (const auto& r : fb::closure_validity(c))
+                                 ranges.emplace_back(std::string(r.quantity), r.min, r.max);
+                               return ranges;
+                             })
+      .def_property_readonly("parameter_names",
+                             [](const fb::NamedClosure& c) {
+                               std::vector<std::string> names;
+                               for (const auto n : fb::parameter_names_of(c)) names.emplace_back(n);
+                               return names;
+                             })
+      .def("get_parameter",
+           [](const fb::NamedClosure& c, const std::string& name) {
+             double value = 0;
+             guarded([&] { value = fb::get_parameter(c, name); });
+             return value;
+           })
+      .def("set_parameter",
+           [](fb::NamedClosure& c, const std::string& name, double value) {
+             guarded([&] { fb::set_parameter(c, name, value); });
+           })
+      .def("richardson_zaki_argument",
+           [](const fb::NamedClosure& c) { return std::string(fb::richardson_zaki_argument(c)); })
+      .def("__copy__", [](const fb::NamedClosure& c) { return c; });
+
+  m.def("closure_names", [] {
+    std::vector<std::string> names;
+    for (const auto& c : fb::catalogue()) names.push_back(c.name);
+    return names;
+  });
+  m.def("family_count", [] { return fb::family_count; });
+  m.def("family_what", [](std::size_t f) { return std::string(fb::family_what(f)); });
+  m.def("family_convention", [](std::size_t f) { return std::string(fb::family_convention(f)); });
+
+  py::module_ f64 = m.def_submodule("float64"), f32 = m.def_submodule("float32");
+  define_kernels<double>(f64);
+  define_kernels<float>(f32);
+}

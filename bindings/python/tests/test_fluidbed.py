@@ -1,0 +1,204 @@
+"""The Python package against the C interface and the reference tables (pytest, ctest python.pytest).
+
+Bit for bit: every drag reference row (both conventions, derivatives) and every one-class
+kinetic-theory row through the package equals the C interface's result, called through ctypes on
+the same numbers (tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++
+library); the drag values also lie within 1e-12 of the mpmath table. Then shapes and broadcasting,
+float32, bad input, the parameters and help().
+
+Environment: FLUIDBED_C_LIBRARY (the built libfluidbed_c), FLUIDBED_REFERENCE_DIR (tests/reference).
+"""
+import csv
+import ctypes
+import os
+import pydoc
+from collections import defaultdict
+
+import numpy as np
+import pytest
+
+import fluidbed
+
+REFERENCE = os.environ.get("FLUIDBED_REFERENCE_DIR", os.path.join(os.path.dirname(__file__), "../../../tests/reference"))
+C = ctypes.CDLL(os.environ["FLUIDBED_C_LIBRARY"])
+DOUBLES = ctypes.POINTER(ctypes.c_double)
+
+
+class CError(ctypes.Structure):
+    _fields_ = [("status", ctypes.c_int), ("index", ctypes.c_size_t), ("message", ctypes.c_char * 512)]
+
+
+def c_closure(name):
+    handle = ctypes.c_void_p()
+    error = CError()
+    assert C.fluidbed_closure_create(name.encode(), ctypes.byref(handle), ctypes.byref(error)) == 0, error.message
+    return handle
+
+
+def ptr(array):
+    return array.ctypes.data_as(DOUBLES) if array is not None else None
+
+
+def rows(table):
+    with open(os.path.join(REFERENCE, table), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def same_bits(a, b):
+    return np.array_equal(np.asarray(a).view(np.uint64), np.asarray(b).view(np.uint64))
+
+
+def drag_cells():
+    by_law = defaultdict(list)
+    for row in rows("drag_reference.csv"):
+        by_law[row["law"]].append(row)
+    return by_law
+
+
+@pytest.mark.parametrize("law_name,cells", sorted(drag_cells().items()))
+def test_drag_reference_rows_bit_for_bit_with_the_c_interface(law_name, cells):
+    columns = {k: np.array([float(r[k]) for r in cells]) for k in
+               ("voidage", "slip", "fluid_density", "fluid_viscosity", "diameter", "beta_classical",
+                "beta_pressure_gradient")}
+    arguments = [columns[k] for k in ("voidage", "slip", "fluid_density", "fluid_viscosity", "diameter")]
+    law = fluidbed.closure(law_name)
+    handle = c_closure(law_name)
+    n = len(cells)
+    for convention, code in (("classical", 0), ("pressure_gradient", 1)):
+        python = law.beta(*arguments, convention=convention, derivatives=True)
+        c = [np.empty(n) for _ in range(4)]
+        error = CError()
+        status = C.fluidbed_drag(handle, code, ctypes.c_size_t(n), *(ptr(a) for a in arguments), *(ptr(a) for a in c),
+                                 ctypes.byref(error))
+        assert status == 0, error.message
+        for p, q in zip(python, c):
+            assert same_bits(p, q)
+        np.testing.assert_allclose(python.beta, columns["beta_" + convention], rtol=1e-12, atol=0)
+        assert same_bits(law.beta(*arguments, convention=convention), python.beta)
+    C.fluidbed_closure_destroy(handle)
+
+
+RADIAL_NAMES = {"carnahan_starling": "CarnahanStarling", "percus_yevick": "PercusYevick", "lun_savage": "LunSavage",
+                "sinclair_jackson": "SinclairJackson", "ogawa": "Ogawa", "gidaspow": "GidaspowRadialDistribution",
+                "ma_ahmadi": "MaAhmadi", "lathouwers_bellan": "LathouwersBellan"}
+CONSTITUTIVE_NAMES = {"granular_pressure:lun": "LunPressure",
+                      "granular_pressure:syamlal_rogers_obrien": "SyamlalRogersOBrienPressure",
+                      "granular_pressure:ma_ahmadi": "AhmadiMaPressure", "shear_viscosity:gidaspow": "GidaspowViscosity",
+                      "shear_viscosity:syamlal": "SyamlalViscosity",
+                      "shear_viscosity:hrenya_sinclair": "HrenyaSinclairViscosity", "bulk_viscosity:lun": "LunBulkViscosity",
+                      "conductivity:gidaspow": "GidaspowConductivity", "conductivity:syamlal": "SyamlalConductivity",
+                      "conductivity:hrenya_sinclair": "HrenyaSinclairConductivity", "dissipation:lun": "LunDissipation"}
+
+
+def test_kinetic_theory_reference_rows_bit_for_bit_with_the_c_interface():
+    compared = 0
+    for row in rows("ktgf_reference.csv"):
+        function, variant = row["function"], row["variant"]
+        number = {k: np.array([float(row[k])]) for k in ("solid_fraction", "granular_temperature", "diameter",
+                                                         "particle_density", "restitution")}
+        if function == "radial_distribution":
+            name = RADIAL_NAMES[variant]
+            python = fluidbed.closure(name).g0(number["solid_fraction"], derivatives=True)
+            value, slope = np.empty(1), np.empty(1)
+            assert C.fluidbed_of_solid_fraction(c_closure(name), ctypes.c_size_t(1), ptr(number["solid_fraction"]),
+                                                ptr(value), ptr(slope), None) == 0
+            assert same_bits(python.value, value) and same_bits(python.d_solid_fraction, slope)
+            compared += 1
+            continue
+        author, radial = variant.split(":")
+        name = CONSTITUTIVE_NAMES.get(f"{function}:{author}")
+        if name is None:
+            continue  # the kinetic and collisional parts, the algebraic temperature: not closures
+        arguments = [number[k] for k in ("solid_fraction", "granular_temperature", "diameter", "particle_density",
+                                         "restitution")]
+        law = fluidbed.closure(name)
+        python = law(*arguments, radial=RADIAL_NAMES[radial], derivatives=True)
+        out = [np.empty(1) for _ in range(3)]
+        assert C.fluidbed_constitutive(c_closure(name), c_closure(RADIAL_NAMES[radial]), ctypes.c_size_t(1),
+                                       *(ptr(a) for a in arguments), *(ptr(a) for a in out), None) == 0
+        for p, q in zip(python, out):
+            assert same_bits(p, q)
+        compared += 1
+    assert compared == 191 + 1092
+
+
+def test_shapes_broadcasting_and_float32():
+    law = fluidbed.drag_laws.MazzeiLettieri()
+    voidage = np.linspace(0.4, 0.95, 12).reshape(3, 4)
+    slip = np.array([0.1, 0.2, 0.3, 0.4])
+    beta = law.beta(voidage, slip, 1.2, 1.8e-5, 3e-4, convention="classical")
+    assert beta.shape == (3, 4) and beta.dtype == np.float64
+    for i in range(3):
+        for j in range(4):
+            assert same_bits(beta[i, j], law.beta(voidage[i, j], slip[j], 1.2, 1.8e-5, 3e-4, convention="classical"))
+    # Both conventions: β_pg = ε β_cl (to rounding).
+    np.testing.assert_allclose(law.beta(voidage, slip, 1.2, 1.8e-5, 3e-4, convention="pressure_gradient"),
+                               voidage * beta, rtol=4e-16)
+    # float32 arrays: the library in single precision, the C interface's fluidbed_drag_f bit for bit.
+    single = [np.float32(x) for x in (0.5, 0.3, 1.2, 1.8e-5, 3e-4)]
+    beta32 = law.beta(*single, convention="classical")
+    assert beta32.dtype == np.float32
+    out = np.empty(1, np.float32)
+    floats = ctypes.POINTER(ctypes.c_float)
+    args = [np.array([x], np.float32) for x in single]
+    assert C.fluidbed_drag_f(c_closure("MazzeiLettieri"), 0, ctypes.c_size_t(1),
+                             *(a.ctypes.data_as(floats) for a in args), out.ctypes.data_as(floats), None, None, None,
+                             None) == 0
+    assert beta32 == out[0]
+    # A mix of float32 and float64 is evaluated in float64.
+    assert law.beta(np.float32(0.5), 0.3, 1.2, 1.8e-5, 3e-4, convention="classical").dtype == np.float64
+
+
+def test_bad_input_gives_the_checked_message_never_a_nan_or_a_crash():
+    law = fluidbed.drag_laws.SyamlalOBrien()
+    voidage = np.array([[0.5, 0.6], [np.nan, 0.7]])
+    with pytest.raises(fluidbed.DomainError) as caught:
+        law.beta(voidage, 0.1, 1.2, 1.8e-5, 3e-4, convention="classical")
+    assert caught.value.index == (1, 0)
+    assert str(caught.value).startswith("fluidbed::SyamlalOBrien: argument 'voidage' = nan is out of domain")
+    with pytest.raises(fluidbed.DomainError, match="'diameter' = -0.001"):
+        law.beta(0.5, 0.1, 1.2, 1.8e-5, -1e-3, convention="classical")
+    with pytest.raises(fluidbed.InvalidArgument, match="do not broadcast"):
+        law.beta(np.ones(3) * 0.5, np.ones(4) * 0.1, 1.2, 1.8e-5, 3e-4, convention="classical")
+    with pytest.raises(TypeError):
+        law.beta(0.5, 0.1, 1.2, 1.8e-5, 3e-4)  # the convention is required
+    with pytest.raises(fluidbed.InvalidArgument, match="convention must be one of"):
+        law.beta(0.5, 0.1, 1.2, 1.8e-5, 3e-4, convention="pressure")
+    with pytest.raises(fluidbed.UnknownName, match="unknown closure 'NoSuchLaw'; known: StokesCoefficient, "):
+        fluidbed.closure("NoSuchLaw")
+    with pytest.raises(fluidbed.UnknownParameter, match="SyamlalOBrien has no parameter 'exponent'; its parameters: c1, d1"):
+        law.set(exponent=2.65)
+    with pytest.raises(fluidbed.DomainError, match=r"argument 'c1' = -1 is out of domain \(must be finite and > 0\)"):
+        law.set(c1=-1)
+    assert law.parameters == {"c1": 0.8, "d1": 2.65}
+    with pytest.raises(fluidbed.InvalidArgument, match="GidaspowViscosity is not a radial distribution"):
+        fluidbed.shear_viscosities.GidaspowViscosity()(0.3, 0.01, 3e-4, 2500, 0.9, radial="GidaspowViscosity")
+    with pytest.raises(fluidbed.InvalidArgument, match="Ergun is not a radial distribution"):
+        fluidbed.RadialDistribution("Ergun")
+    empty = law.beta(np.empty((0, 3)), 0.1, 1.2, 1.8e-5, 3e-4, convention="classical")
+    assert empty.shape == (0, 3)
+
+
+def test_parameters_and_classes():
+    wen_yu = fluidbed.drag_laws.WenYu1966(exponent=2.65)
+    assert wen_yu.parameters == {"exponent": 2.65}
+    state = (0.7, 0.3, 1.2, 1.8e-5, 3e-4)
+    assert same_bits(wen_yu.beta(*state, convention="classical"),
+                     fluidbed.drag_laws.WenYuGidaspow().beta(*state, convention="classical"))
+    assert isinstance(fluidbed.closure("MazzeiLettieri"), fluidbed.drag_laws.MazzeiLettieri)
+    # Every closure is a class in its family's namespace (fluidbed.drag_laws, fluidbed.radial_distributions, ...).
+    for name in fluidbed.closure_names():
+        cls = type(fluidbed.closure(name))
+        assert cls.__name__ == name
+        assert getattr(getattr(fluidbed, cls.__module__.split(".")[1]), name) is cls
+    assert len(fluidbed.closure_names()) == 63
+
+
+def test_help_shows_equation_convention_validity_and_reference():
+    text = pydoc.render_doc(fluidbed.drag_laws.MazzeiLettieri, renderer=pydoc.plaintext)
+    assert "$$" in text or "```math" in text
+    assert "Convention: " in text and "pressure" in text
+    assert "Validity: voidage in [" in text
+    assert "Reference: Mazzei" in text
+    for name in fluidbed.closure_names():
+        assert "Reference: " in fluidbed.closure(name).__doc__
