@@ -329,7 +329,8 @@ def parameters(work):
     for index, (coefficients, given, expected) in enumerate(KINETIC_THEORY_REJECTED):
         case = work / f"rejected_kinetic_theory_{index}"
         stopped = subprocess.run(["bash", str(RUN_CASE), str(case), "openfoam:GidaspowErgunWenYu", "1"],
-                                 env=dict(os.environ, FLUIDBED_CASE_SETUP=with_kinetic_theory_entry(coefficients, given)),
+                                 env=dict(os.environ, FLUIDBED_OPENFOAM_LIB=str(PLUGIN),
+                                          FLUIDBED_CASE_SETUP=with_kinetic_theory_entry(coefficients, given)),
                                  stdout=subprocess.DEVNULL).returncode != 0
         ok = stopped and expected in (case / "log.twoPhaseEulerFoam").read_text()
         failures += not ok
