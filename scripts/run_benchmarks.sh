@@ -2,7 +2,8 @@
 # Builds the microbenchmarks with optimisation and runs them; prints ns per cell and the
 # ratio of every drag law to Wen–Yu, of every moment-inversion path to a generic (dynamic
 # Eigen, dense eigen-solver) baseline, of drag + elastic force to the drag alone, and of
-# the kinetic-theory set per cell to the Wen–Yu drag, each measured in the same run. Extra
+# the kinetic-theory set per cell to the Wen–Yu drag, of the C interface over a field to the C++
+# loop over it, and of the Python package to the C interface, each measured in the same run. Extra
 # arguments go to Google Benchmark (e.g. --benchmark_filter=Mazzei).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,3 +15,5 @@ cmake --build build/bench -j "$(nproc)"
 ./build/bench/bench/fluidbed_moments_bench --benchmark_repetitions=5 "$@"
 ./build/bench/bench/fluidbed_elastic_bench --benchmark_repetitions=5 "$@"
 ./build/bench/bench/fluidbed_kinetic_theory_bench --benchmark_repetitions=5 "$@"
+./build/bench/bench/fluidbed_bindings_bench --benchmark_repetitions=5 "$@"
+/usr/bin/python3 bench/bindings_python.py build/bench
