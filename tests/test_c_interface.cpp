@@ -15,11 +15,13 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "fluidbed/moments/batched.hpp"
 #include "fluidbed/registries.hpp"
 #include "fluidbed_c.h"
 #include "kinetic_theory_table_names.hpp"
@@ -358,6 +360,76 @@ TEST_CASE("C interface: every one-class kinetic-theory reference row bit for bit
   CHECK(fluidbed_constitutive(viscosity.get(), radial.get(), 1, &phi, &negative_theta, &d, &rho, &e, &out, nullptr,
                               nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
   CHECK(std::string(error.message).find("granular_temperature") != std::string::npos);
+}
+
+TEST_CASE("C interface: every moment set of the moments reference table, 1 to 8 nodes, bit for bit with invert_batched") {
+  const test::ReferenceTable table("moments_reference.csv");
+  std::map<std::string, std::vector<double>> sets;  // the moments of each case, in index order
+  for (std::size_t row = 0; row < table.size(); ++row)
+    if (table.text(row, "quantity") == "moment") {
+      std::vector<double>& m = sets[table.text(row, "case")];
+      const auto k = static_cast<std::size_t>(table.number(row, "index"));
+      if (m.size() <= k) m.resize(k + 1);
+      m[k] = table.number(row, "value");
+    }
+  REQUIRE(sets.size() > 10);
+  std::size_t compared = 0;
+  const auto compare = [&]<int N>(std::integral_constant<int, N>, fluidbed_support support) {
+    std::vector<std::vector<double>> cells;  // every case with at least 2N moments, one cell each
+    for (const auto& [name, m] : sets)
+      if (m.size() >= 2 * N) cells.emplace_back(m.begin(), m.begin() + 2 * N);
+    const std::size_t n = cells.size();
+    std::vector<double> in(2 * N * n), nodes(N * n), weights(N * n);
+    std::vector<int> sizes(n), status(n);
+    for (std::size_t c = 0; c < n; ++c)
+      for (int k = 0; k < 2 * N; ++k) in[k * n + c] = cells[c][k];
+    REQUIRE(fluidbed_invert_moments(N, support, n, in.data(), nodes.data(), weights.data(), sizes.data(),
+                                    status.data(), nullptr) == FLUIDBED_OK);
+    moments::MomentBatch<double, N> batch;
+    for (int k = 0; k < 2 * N; ++k) batch.moments[k] = std::span<const double>(in.data() + k * n, n);
+    std::vector<double> cpp_nodes(N * n), cpp_weights(N * n);
+    std::vector<int> cpp_sizes(n);
+    std::vector<moments::InversionStatus> cpp_status(n);
+    moments::QuadratureBatch<double, N> out;
+    for (int i = 0; i < N; ++i) {
+      out.nodes[i] = std::span<double>(cpp_nodes.data() + i * n, n);
+      out.weights[i] = std::span<double>(cpp_weights.data() + i * n, n);
+    }
+    out.sizes = cpp_sizes;
+    out.status = cpp_status;
+    REQUIRE(moments::invert_batched(
+        batch, out,
+        support == FLUIDBED_SUPPORT_REAL_LINE ? moments::Support::real_line : moments::Support::positive_half_line));
+    for (std::size_t i = 0; i < N * n; ++i) {
+      CHECK(same_bits(nodes[i], cpp_nodes[i]));
+      CHECK(same_bits(weights[i], cpp_weights[i]));
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      CHECK(sizes[c] == cpp_sizes[c]);
+      CHECK(status[c] == static_cast<int>(cpp_status[c]));
+    }
+    compared += n;
+  };
+  for (const fluidbed_support support : {FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE})
+    [&]<int... M>(std::integer_sequence<int, M...>) {
+      (compare(std::integral_constant<int, M + 1>{}, support), ...);
+    }(std::make_integer_sequence<int, 8>{});
+  CHECK(compared > 100);
+
+  // Statuses, not errors, for cells that cannot be inverted; errors for what is not a cell's.
+  const double empty_and_nan[4] = {0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0};  // 2 cells, N = 1
+  double node[2], weight[2];
+  int size[2], status[2];
+  fluidbed_error error{};
+  CHECK(fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, 2, empty_and_nan, node, weight, size, status,
+                                &error) == FLUIDBED_OK);
+  CHECK(status[0] == FLUIDBED_INVERSION_ZERO_MASS);
+  CHECK(status[1] == FLUIDBED_INVERSION_INVALID_INPUT);
+  CHECK(fluidbed_invert_moments(9, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, 2, empty_and_nan, node, weight, size, status,
+                                &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(std::string(error.message) == "fluidbed: invert_moments: 9 nodes; 1 to 8 are offered");
+  CHECK(fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, 2, empty_and_nan, node, nullptr, size, status,
+                                &error) == FLUIDBED_INVALID_ARGUMENT);
 }
 
 TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {

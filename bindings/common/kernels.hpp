@@ -7,12 +7,16 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "any_closure.hpp"
+#include "fluidbed/moments/batched.hpp"
 
 namespace fluidbed::bindings {
 
@@ -219,6 +223,51 @@ void frictional_stress(const NamedClosure& law, std::size_t n, const T* phi, con
         });
       },
       closure);
+}
+
+// The largest node count the bindings invert for (fluidbed::moments handles any N; the bindings
+// dispatch a run-time count to the compiled ones).
+inline constexpr int max_nodes = 8;
+
+namespace detail {
+
+template <class T, int N>
+void invert_moments(moments::Support support, std::size_t n, const T* moments_in, T* nodes, T* weights, int* sizes,
+                    int* statuses) {
+  moments::MomentBatch<T, N> in;
+  for (int k = 0; k < 2 * N; ++k) in.moments[k] = std::span<const T>(moments_in + k * n, n);
+  moments::QuadratureBatch<T, N> out;
+  for (int i = 0; i < N; ++i) {
+    out.nodes[i] = std::span<T>(nodes + i * n, n);
+    out.weights[i] = std::span<T>(weights + i * n, n);
+  }
+  std::vector<moments::InversionStatus> status(n);
+  out.sizes = std::span<int>(sizes, n);
+  out.status = std::span<moments::InversionStatus>(status);
+  if (!moments::invert_batched(in, out, support)) throw InvalidArgument("fluidbed: invert_moments: inconsistent sizes");
+  for (std::size_t c = 0; c < n; ++c) statuses[c] = static_cast<int>(status[c]);
+}
+
+}  // namespace detail
+
+// Inverts n cells' 2N moments each to N-node Gauss rules (moments::invert_batched), structure of
+// arrays: moment k of cell c at moments_in[k n + c], node i at nodes[i n + c], its weight at
+// weights[i n + c] (0 for i >= sizes[c]), the node count and the per-cell status
+// (moments::InversionStatus as int) of every cell. A cell that cannot be inverted has its status,
+// never an exception: only a node count outside 1 … max_nodes or a missing array throws.
+template <class T>
+void invert_moments(int node_count, moments::Support support, std::size_t n, const T* moments_in, T* nodes,
+                    T* weights, int* sizes, int* statuses) {
+  if (node_count < 1 || node_count > max_nodes)
+    throw InvalidArgument("fluidbed: invert_moments: " + std::to_string(node_count) + " nodes; 1 to " +
+                          std::to_string(max_nodes) + " are offered");
+  require_arrays(n, "invert_moments", moments_in, nodes, weights, sizes, statuses);
+  [&]<int... N>(std::integer_sequence<int, N...>) {
+    ((node_count == N + 1 ? (detail::invert_moments<T, N + 1>(support, n, moments_in, nodes, weights, sizes, statuses),
+                             true)
+                          : false) ||
+     ...);
+  }(std::make_integer_sequence<int, max_nodes>{});
 }
 
 }  // namespace fluidbed::bindings

@@ -235,6 +235,35 @@ FLUIDBED_C_API fluidbed_status fluidbed_frictional_stress(const fluidbed_closure
                                                           double* viscosity, double* d_pressure, double* d_viscosity,
                                                           fluidbed_error* error);
 
+/* ---- Moment inversion ------------------------------------------------------------------------- */
+
+/* The support of the distributions: [0, ∞) (sizes, masses) or the real line (velocities). */
+typedef enum fluidbed_support {
+  FLUIDBED_SUPPORT_POSITIVE_HALF_LINE = 0,
+  FLUIDBED_SUPPORT_REAL_LINE = 1
+} fluidbed_support;
+
+/* A cell's outcome (the C++ library's moments::InversionStatus). */
+typedef enum fluidbed_inversion_status {
+  FLUIDBED_INVERSION_OK = 0,              /* all N nodes */
+  FLUIDBED_INVERSION_REDUCED = 1,         /* fewer nodes: the set is realizable only with sizes[c] nodes */
+  FLUIDBED_INVERSION_ZERO_MASS = 2,       /* every moment 0: an empty cell, no nodes */
+  FLUIDBED_INVERSION_NOT_REALIZABLE = 3,  /* not even one node */
+  FLUIDBED_INVERSION_INVALID_INPUT = 4,   /* a moment NaN or infinite, or the set beyond the floating-point range */
+  FLUIDBED_INVERSION_EIGEN_FAILURE = 5    /* the eigen-solver did not converge (never observed for sizes) */
+} fluidbed_inversion_status;
+
+/* Inverts n cells, 2 node_count moments each (node_count from 1 to 8), to node_count-node Gauss
+ * rules, as a CFD code stores the fields: moment k of cell c at moments[k n + c]; writes node i of
+ * cell c at nodes[i n + c] (ascending in i) and its weight at weights[i n + c] (0 for i >=
+ * sizes[c]), the node count sizes[c] and the cell's status[c] (a fluidbed_inversion_status). The
+ * results and statuses are those of the C++ moments::invert_batched, bit for bit. A cell that
+ * cannot be inverted has its status and the function still returns FLUIDBED_OK; only a node count
+ * out of range or a NULL array is an error (FLUIDBED_INVALID_ARGUMENT). */
+FLUIDBED_C_API fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_support support, size_t n,
+                                                       const double* moments, double* nodes, double* weights,
+                                                       int* sizes, int* status, fluidbed_error* error);
+
 #ifdef __cplusplus
 }
 #endif

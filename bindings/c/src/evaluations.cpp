@@ -11,6 +11,15 @@ using namespace fluidbed::c_api;
 
 namespace {
 
+using fluidbed::moments::InversionStatus;
+static_assert(FLUIDBED_INVERSION_OK == int(InversionStatus::ok) &&
+                  FLUIDBED_INVERSION_REDUCED == int(InversionStatus::reduced) &&
+                  FLUIDBED_INVERSION_ZERO_MASS == int(InversionStatus::zero_mass) &&
+                  FLUIDBED_INVERSION_NOT_REALIZABLE == int(InversionStatus::not_realizable) &&
+                  FLUIDBED_INVERSION_INVALID_INPUT == int(InversionStatus::invalid_input) &&
+                  FLUIDBED_INVERSION_EIGEN_FAILURE == int(InversionStatus::eigen_failure),
+              "fluidbed_inversion_status follows moments::InversionStatus");
+
 fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
   switch (convention) {
     case FLUIDBED_BUOYANCY_CLASSICAL: return fluidbed::drag::Buoyancy::classical;
@@ -141,5 +150,18 @@ extern "C" fluidbed_status fluidbed_frictional_stress(const fluidbed_closure* la
     fluidbed::bindings::frictional_stress(closure_of(law, "frictional_stress"), n, solid_fraction,
                                           granular_temperature, diameter, divergence, contraction, pressure,
                                           viscosity, d_pressure, d_viscosity);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_support support, size_t n,
+                                                   const double* moments, double* nodes, double* weights, int* sizes,
+                                                   int* status, fluidbed_error* error) {
+  return guarded(error, [&] {
+    if (support != FLUIDBED_SUPPORT_POSITIVE_HALF_LINE && support != FLUIDBED_SUPPORT_REAL_LINE)
+      throw InvalidArgument("fluidbed: unknown fluidbed_support " + std::to_string(static_cast<int>(support)));
+    fluidbed::bindings::invert_moments(node_count,
+                                       support == FLUIDBED_SUPPORT_REAL_LINE ? fluidbed::moments::Support::real_line
+                                                                             : fluidbed::moments::Support::positive_half_line,
+                                       n, moments, nodes, weights, sizes, status);
   });
 }

@@ -28,7 +28,7 @@ from ._closure_docs import SECTIONS as _SECTIONS
 __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidArgument", "closure", "closure_names",
            "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
            "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
-           "FrictionalStress", "CONVENTIONS"]
+           "FrictionalStress", "CONVENTIONS", "invert", "INVERSION_STATUSES"]
 
 
 class Error(ValueError):
@@ -65,6 +65,10 @@ WithSlope = namedtuple("WithSlope", "value d_solid_fraction")
 WithDerivative = namedtuple("WithDerivative", "value derivative")
 Constitutive = namedtuple("Constitutive", "value d_solid_fraction d_granular_temperature")
 Stress = namedtuple("Stress", "pressure viscosity d_pressure d_viscosity")
+Quadrature = namedtuple("Quadrature", "nodes weights sizes status")
+
+#: A cell's outcome of ``invert`` (the C++ library's moments::InversionStatus).
+INVERSION_STATUSES = ("ok", "reduced", "zero_mass", "not_realizable", "invalid_input", "eigen_failure")
 
 
 def closure_names():
@@ -270,6 +274,29 @@ class FrictionalStress(Closure):
         return Stress(*_evaluate("frictional_stress", [self._closure],
                                  [solid_fraction, granular_temperature, diameter, divergence, contraction],
                                  derivatives))
+
+
+def invert(moments, *, support="positive_half_line"):
+    """Gauss quadratures of moment sets: ``moments`` of shape (..., 2N), the last axis m_0 … m_(2N−1)
+    of one cell (N from 1 to 8); ``support`` "positive_half_line" (sizes, masses) or "real_line"
+    (velocities). Returns a ``Quadrature`` of nodes and weights (..., N), ascending nodes, weight 0
+    beyond a cell's node count, the node counts (...) and the statuses (..., indices into
+    INVERSION_STATUSES): a cell that cannot be inverted has its status, never an exception. The
+    C++ library's moments::invert_batched, bit for bit."""
+    if support not in ("positive_half_line", "real_line"):
+        raise InvalidArgument(f"fluidbed: support must be 'positive_half_line' or 'real_line', not {support!r}")
+    m = np.asarray(moments)
+    if m.ndim < 1 or m.shape[-1] % 2 or m.shape[-1] == 0:
+        raise InvalidArgument(f"fluidbed: invert: the last axis must hold 2N moments, not shape {m.shape}")
+    dtype = np.float32 if m.dtype == np.float32 else np.float64
+    n = m.shape[-1] // 2
+    cells = m.reshape(-1, 2 * n)
+    module = _fluidbed.float32 if dtype == np.float32 else _fluidbed.float64
+    nodes, weights, sizes, status = module.invert_moments(n, support == "real_line",
+                                                          np.ascontiguousarray(cells.T, dtype=dtype))
+    shape = m.shape[:-1]
+    return Quadrature(nodes.T.reshape(*shape, n), weights.T.reshape(*shape, n), sizes.reshape(shape),
+                      status.reshape(shape))
 
 
 # The class of each family; the families without a class here are reachable for their metadata.

@@ -125,9 +125,33 @@ py::tuple one_argument(const fb::NamedClosure& law, const Array<T>& x, bool deri
   return py::make_tuple(value, slope);
 }
 
+// Moment inversion of n cells, moment-major (moment k of cell c at [k, c]).
+template <class T>
+py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments_in) {
+  if (moments_in.ndim() != 2)
+    guarded([] { throw fb::InvalidArgument("fluidbed: invert_moments: moments must be (2N, cells)"); });
+  const py::ssize_t n = moments_in.shape(1);
+  if (moments_in.shape(0) != 2 * node_count)
+    guarded([&] {
+      throw fb::InvalidArgument("fluidbed: invert_moments: " + std::to_string(moments_in.shape(0)) +
+                                " moments per cell for " + std::to_string(node_count) + " nodes");
+    });
+  Array<T> nodes({static_cast<py::ssize_t>(node_count), n}), weights({static_cast<py::ssize_t>(node_count), n});
+  py::array_t<int> sizes(n), status(n);
+  T *x = nodes.mutable_data(), *w = weights.mutable_data();
+  int *s = sizes.mutable_data(), *st = status.mutable_data();
+  guarded([&] {
+    fb::invert_moments<T>(node_count, real_line ? fluidbed::moments::Support::real_line
+                                                : fluidbed::moments::Support::positive_half_line,
+                          static_cast<std::size_t>(n), moments_in.data(), x, w, s, st);
+  });
+  return py::make_tuple(nodes, weights, sizes, status);
+}
+
 template <class T>
 void define_kernels(py::module_& m) {
   m.def("drag", &drag<T>);
+  m.def("invert_moments", &invert_moments<T>);
   m.def("constitutive", &constitutive<T>);
   m.def("sphere_drag_coefficient", [](const fb::NamedClosure& law, const Array<T>& re, bool derivatives) {
     return one_argument<T>(law, re, derivatives, fb::sphere_drag_coefficient<T>);

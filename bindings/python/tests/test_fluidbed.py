@@ -202,3 +202,44 @@ def test_help_shows_equation_convention_validity_and_reference():
     assert "Reference: Mazzei" in text
     for name in fluidbed.closure_names():
         assert "Reference: " in fluidbed.closure(name).__doc__
+
+
+def moment_sets():
+    sets = defaultdict(dict)
+    for row in rows("moments_reference.csv"):
+        if row["quantity"] == "moment":
+            sets[row["case"]][int(row["index"])] = float(row["value"])
+    return {name: np.array([m[k] for k in sorted(m)]) for name, m in sets.items()}
+
+
+@pytest.mark.parametrize("support,code", [("positive_half_line", 0), ("real_line", 1)])
+def test_moment_reference_sets_bit_for_bit_with_the_c_interface(support, code):
+    sets = moment_sets()
+    ints = ctypes.POINTER(ctypes.c_int)
+    for n in range(1, 9):
+        cells = np.array([m[:2 * n] for m in sets.values() if len(m) >= 2 * n])
+        python = fluidbed.invert(cells, support=support)
+        assert python.nodes.shape == (len(cells), n) and python.status.shape == (len(cells),)
+        moments = np.ascontiguousarray(cells.T)
+        nodes, weights = np.empty((n, len(cells))), np.empty((n, len(cells)))
+        sizes, status = np.empty(len(cells), np.intc), np.empty(len(cells), np.intc)
+        assert C.fluidbed_invert_moments(n, code, ctypes.c_size_t(len(cells)), ptr(moments), ptr(nodes), ptr(weights),
+                                         sizes.ctypes.data_as(ints), status.ctypes.data_as(ints), None) == 0
+        assert same_bits(python.nodes, nodes.T) and same_bits(python.weights, weights.T)
+        assert np.array_equal(python.sizes, sizes) and np.array_equal(python.status, status)
+
+
+def test_inversion_statuses_shapes_and_errors():
+    k = np.arange(6)
+    legendre = 1 / (k + 1)  # m_k of the uniform distribution on [0, 1]: the 3-point Gauss–Legendre rule
+    q = fluidbed.invert(np.stack([[legendre, 2 * legendre], [np.zeros(6), np.full(6, np.nan)]]))
+    assert q.nodes.shape == (2, 2, 3)
+    np.testing.assert_allclose(q.nodes[0, 0], [0.5 - np.sqrt(0.15), 0.5, 0.5 + np.sqrt(0.15)], rtol=1e-14)
+    np.testing.assert_allclose(q.weights[0, 1], [5 / 9, 8 / 9, 5 / 9], rtol=1e-14)
+    assert [fluidbed.INVERSION_STATUSES[s] for s in q.status.ravel()] == ["ok", "ok", "zero_mass", "invalid_input"]
+    with pytest.raises(fluidbed.InvalidArgument, match="2N moments"):
+        fluidbed.invert(np.ones(5))
+    with pytest.raises(fluidbed.InvalidArgument, match="1 to 8 are offered"):
+        fluidbed.invert(np.ones(18))
+    with pytest.raises(fluidbed.InvalidArgument, match="support must be"):
+        fluidbed.invert(legendre, support="half_line")
