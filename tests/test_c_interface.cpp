@@ -432,6 +432,48 @@ TEST_CASE("C interface: every moment set of the moments reference table, 1 to 8 
                                 &error) == FLUIDBED_INVALID_ARGUMENT);
 }
 
+TEST_CASE("C interface: the elastic moduli on the elastic reference states bit for bit, at equilibrium and at a state") {
+  const test::ReferenceTable table("elastic_state_reference.csv");
+  std::size_t compared = 0;
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    const double rho_f = table.number(row, "fluid_density"), mu = table.number(row, "fluid_viscosity"),
+                 rho_p = table.number(row, "particle_density"), d = table.number(row, "diameter"),
+                 e = table.number(row, "voidage"), w = table.number(row, "slip"),
+                 re_t = table.number(row, "reynolds"), g = 9.80665;
+    for (const auto& model : elastic::ElasticModuli::all()) {
+      const std::string name(elastic::ElasticModuli::name_of(model));
+      CAPTURE(name);
+      const Handle handle = create(name);
+      double value = 0, d_voidage = 0, d_slip = 0;
+      fluidbed_error error{};
+      REQUIRE(fluidbed_elastic_modulus_at_equilibrium(handle.get(), 1, &e, &rho_f, &mu, &rho_p, &d, &re_t, &g, &value,
+                                                      &d_voidage, &error) == FLUIDBED_OK);
+      const elastic::EquilibriumState<double> equilibrium{e, {rho_f, mu}, {rho_p, d}, re_t, g};
+      std::visit(
+          [&]<class Model>(const Model& m) {
+            CHECK(same_bits(value, m.checked(equilibrium)));
+            CHECK(same_bits(d_voidage, m.checked_with_derivatives(equilibrium).d_voidage));
+            const fluidbed_status at_state = fluidbed_elastic_modulus_at_state(
+                handle.get(), 1, &e, &w, &rho_f, &mu, &d, &value, &d_voidage, &d_slip, &error);
+            if constexpr (elastic::DefinedOffEquilibrium<Model, double>) {
+              REQUIRE(at_state == FLUIDBED_OK);
+              const drag::DragState<double> state{e, w, {rho_f, mu}, d};
+              const auto with = m.checked_with_derivatives(state);
+              CHECK(same_bits(value, m.checked(state)));
+              CHECK(same_bits(d_voidage, with.d_voidage));
+              CHECK(same_bits(d_slip, with.d_slip));
+            } else {
+              CHECK(at_state == FLUIDBED_INVALID_ARGUMENT);
+              CHECK(std::string(error.message).ends_with("defines no modulus off equilibrium"));
+            }
+          },
+          model);
+      ++compared;
+    }
+  }
+  CHECK(compared == 3 * table.size());
+}
+
 TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {
   const Handle law = create("SyamlalOBrien");
   const double voidage[] = {0.5, std::numeric_limits<double>::quiet_NaN(), 0.5};

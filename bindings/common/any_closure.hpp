@@ -118,14 +118,14 @@ inline NamedClosure make_closure(std::string_view name) {
 inline std::string_view family_what(std::size_t family) {
   return [&]<std::size_t... f>(std::index_sequence<f...>) {
     std::string_view what;
-    ((family == f ? (what = RegistryOf<f>::family::what, true) : false) || ...);
+    static_cast<void>(((family == f ? (what = RegistryOf<f>::family::what, true) : false) || ...));
     return what;
   }(std::make_index_sequence<family_count>{});
 }
 inline std::string_view family_convention(std::size_t family) {
   return [&]<std::size_t... f>(std::index_sequence<f...>) {
     std::string_view convention;
-    ((family == f ? (convention = RegistryOf<f>::family::convention, true) : false) || ...);
+    static_cast<void>(((family == f ? (convention = RegistryOf<f>::family::convention, true) : false) || ...));
     return convention;
   }(std::make_index_sequence<family_count>{});
 }

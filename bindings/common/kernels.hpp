@@ -225,6 +225,54 @@ void frictional_stress(const NamedClosure& law, std::size_t n, const T* phi, con
       closure);
 }
 
+// The elastic modulus E^e [Pa] at equilibrium (ε, the fluid, the particles, Re_t, g) and ∂E^e/∂ε.
+template <class T>
+void elastic_modulus_at_equilibrium(const NamedClosure& model, std::size_t n, const T* voidage, const T* fluid_density,
+                                    const T* fluid_viscosity, const T* particle_density, const T* diameter,
+                                    const T* terminal_reynolds, const T* gravity, T* modulus, T* d_voidage) {
+  const auto& closure = family_closure<elastic_moduli>(model, "elastic_modulus_at_equilibrium");
+  require_arrays(n, "elastic_modulus_at_equilibrium", voidage, fluid_density, fluid_viscosity, particle_density,
+                 diameter, terminal_reynolds, gravity, modulus);
+  std::visit(
+      [&](const auto& m) {
+        for_each_cell(n, [&](std::size_t i) {
+          const elastic::EquilibriumState<T> state{voidage[i], {fluid_density[i], fluid_viscosity[i]},
+                                                   {particle_density[i], diameter[i]}, terminal_reynolds[i],
+                                                   gravity[i]};
+          modulus[i] = m.checked(state);
+          if (d_voidage != nullptr) d_voidage[i] = m.checked_with_derivatives(state).d_voidage;
+        });
+      },
+      closure);
+}
+
+// The elastic modulus E [Pa] off equilibrium, at a drag state (ε, w, ρ_f, μ_f, d), with ∂E/∂ε and
+// ∂E/∂w, for the models that define one (Mazzei–Lettieri); InvalidArgument for the others.
+template <class T>
+void elastic_modulus_at_state(const NamedClosure& model, std::size_t n, const T* voidage, const T* slip,
+                              const T* fluid_density, const T* fluid_viscosity, const T* diameter, T* modulus,
+                              T* d_voidage, T* d_slip) {
+  const auto& closure = family_closure<elastic_moduli>(model, "elastic_modulus_at_state");
+  require_arrays(n, "elastic_modulus_at_state", voidage, slip, fluid_density, fluid_viscosity, diameter, modulus);
+  std::visit(
+      [&]<class Model>(const Model& m) {
+        if constexpr (elastic::DefinedOffEquilibrium<Model, T>) {
+          for_each_cell(n, [&](std::size_t i) {
+            const drag::DragState<T> state{voidage[i], slip[i], {fluid_density[i], fluid_viscosity[i]}, diameter[i]};
+            modulus[i] = m.checked(state);
+            if (d_voidage == nullptr && d_slip == nullptr) return;
+            const auto d = m.checked_with_derivatives(state);
+            if (d_voidage != nullptr) d_voidage[i] = d.d_voidage;
+            if (d_slip != nullptr) d_slip[i] = d.d_slip;
+          });
+        } else {
+          throw InvalidArgument("fluidbed: elastic_modulus_at_state: " + model.name +
+                                " defines no modulus off equilibrium");
+        }
+      },
+      closure);
+}
+
 // The largest node count the bindings invert for (fluidbed::moments handles any N; the bindings
 // dispatch a run-time count to the compiled ones).
 inline constexpr int max_nodes = 8;
@@ -263,10 +311,11 @@ void invert_moments(int node_count, moments::Support support, std::size_t n, con
                           std::to_string(max_nodes) + " are offered");
   require_arrays(n, "invert_moments", moments_in, nodes, weights, sizes, statuses);
   [&]<int... N>(std::integer_sequence<int, N...>) {
-    ((node_count == N + 1 ? (detail::invert_moments<T, N + 1>(support, n, moments_in, nodes, weights, sizes, statuses),
-                             true)
-                          : false) ||
-     ...);
+    static_cast<void>(
+        ((node_count == N + 1
+              ? (detail::invert_moments<T, N + 1>(support, n, moments_in, nodes, weights, sizes, statuses), true)
+              : false) ||
+         ...));
   }(std::make_integer_sequence<int, max_nodes>{});
 }
 

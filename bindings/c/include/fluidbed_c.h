@@ -183,6 +183,28 @@ FLUIDBED_C_API fluidbed_status fluidbed_richardson_zaki_exponent(const fluidbed_
 /* "terminal_reynolds" or "archimedes"; NULL for a closure of another family. */
 FLUIDBED_C_API const char* fluidbed_richardson_zaki_argument(const fluidbed_closure* law);
 
+/* ---- Elastic moduli (FLUIDBED_ELASTIC_MODULUS) -------------------------------------------------- */
+
+/* The elastic modulus E^e [Pa] of a homogeneous bed at equilibrium: voidage[i] = ε ∈ (0, 1], the
+ * fluid (density [kg/m^3], viscosity [Pa s]), the particles (density > the fluid's [kg/m^3],
+ * diameter [m]), the terminal Reynolds number Re_t = ρ_f u_t d/μ_f >= 0 (read by Mazzei–Lettieri
+ * only) and the gravity [m/s^2]; if not NULL, d_voidage[i] = ∂E^e/∂ε. */
+FLUIDBED_C_API fluidbed_status fluidbed_elastic_modulus_at_equilibrium(
+    const fluidbed_closure* model, size_t n, const double* voidage, const double* fluid_density,
+    const double* fluid_viscosity, const double* particle_density, const double* diameter,
+    const double* terminal_reynolds, const double* gravity, double* modulus, double* d_voidage,
+    fluidbed_error* error);
+
+/* The elastic modulus E [Pa] off equilibrium, at the drag state (ε, w, ρ_f, μ_f, d) of
+ * fluidbed_drag, for the models that define one (Mazzei–Lettieri; FLUIDBED_INVALID_ARGUMENT for
+ * the others); if not NULL, ∂E/∂ε at fixed w and ∂E/∂w at fixed ε. */
+FLUIDBED_C_API fluidbed_status fluidbed_elastic_modulus_at_state(const fluidbed_closure* model, size_t n,
+                                                                 const double* voidage, const double* slip,
+                                                                 const double* fluid_density,
+                                                                 const double* fluid_viscosity, const double* diameter,
+                                                                 double* modulus, double* d_voidage, double* d_slip,
+                                                                 fluidbed_error* error);
+
 /* ---- Kinetic theory of one class of particles ------------------------------------------------ */
 
 /* FLUIDBED_RADIAL_DISTRIBUTION (g0, dimensionless) and FLUIDBED_FRICTIONAL_PRESSURE (p_f [Pa] per

@@ -165,3 +165,27 @@ extern "C" fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_supp
                                        n, moments, nodes, weights, sizes, status);
   });
 }
+
+extern "C" fluidbed_status fluidbed_elastic_modulus_at_equilibrium(
+    const fluidbed_closure* model, size_t n, const double* voidage, const double* fluid_density,
+    const double* fluid_viscosity, const double* particle_density, const double* diameter,
+    const double* terminal_reynolds, const double* gravity, double* modulus, double* d_voidage,
+    fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::elastic_modulus_at_equilibrium(closure_of(model, "elastic_modulus_at_equilibrium"), n, voidage,
+                                                       fluid_density, fluid_viscosity, particle_density, diameter,
+                                                       terminal_reynolds, gravity, modulus, d_voidage);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_elastic_modulus_at_state(const fluidbed_closure* model, size_t n,
+                                                             const double* voidage, const double* slip,
+                                                             const double* fluid_density,
+                                                             const double* fluid_viscosity, const double* diameter,
+                                                             double* modulus, double* d_voidage, double* d_slip,
+                                                             fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::elastic_modulus_at_state(closure_of(model, "elastic_modulus_at_state"), n, voidage, slip,
+                                                 fluid_density, fluid_viscosity, diameter, modulus, d_voidage, d_slip);
+  });
+}

@@ -27,7 +27,7 @@ from ._closure_docs import SECTIONS as _SECTIONS
 
 __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidArgument", "closure", "closure_names",
            "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
-           "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
+           "ElasticModulus", "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
            "FrictionalStress", "CONVENTIONS", "invert", "INVERSION_STATUSES"]
 
 
@@ -212,6 +212,29 @@ class RichardsonZakiExponent(Closure):
         return WithDerivative(*r) if derivatives else r[0]
 
 
+Modulus = namedtuple("Modulus", "value d_voidage d_slip")
+
+
+class ElasticModulus(Closure):
+    family = 5
+
+    def at_equilibrium(self, voidage, fluid_density, fluid_viscosity, particle_density, diameter, terminal_reynolds,
+                       gravity=9.80665, *, derivatives=False):
+        """E^e [Pa] of a homogeneous bed at equilibrium (ε, ρ_f, μ_f, ρ_p, d, Re_t = ρ_f u_t d/μ_f, g);
+        with ``derivatives`` also ∂E^e/∂ε."""
+        r = _evaluate("elastic_modulus_at_equilibrium", [self._closure],
+                      [voidage, fluid_density, fluid_viscosity, particle_density, diameter, terminal_reynolds,
+                       gravity], derivatives)
+        return WithDerivative(*r) if derivatives else r[0]
+
+    def at_state(self, voidage, slip, fluid_density, fluid_viscosity, diameter, *, derivatives=False):
+        """E [Pa] off equilibrium at the drag state (ε, w, ρ_f, μ_f, d), for the models that define one
+        (Mazzei–Lettieri); with ``derivatives`` a ``Modulus`` with ∂E/∂ε and ∂E/∂w."""
+        r = _evaluate("elastic_modulus_at_state", [self._closure],
+                      [voidage, slip, fluid_density, fluid_viscosity, diameter], derivatives)
+        return Modulus(*r) if derivatives else r[0]
+
+
 class _OfSolidFraction(Closure):
     def _of(self, solid_fraction, derivatives):
         r = _evaluate("of_solid_fraction", [self._closure], [solid_fraction], derivatives)
@@ -301,7 +324,7 @@ def invert(moments, *, support="positive_half_line"):
 
 # The class of each family; the families without a class here are reachable for their metadata.
 _CLASS_OF_FAMILY = {0: SphereDragCoefficient, 1: TerminalVelocity, 2: RichardsonZakiExponent, 3: MinimumFluidization,
-                    4: DragLaw, 6: RadialDistribution, 13: FrictionalPressure, 14: FrictionalViscosity,
+                    4: DragLaw, 5: ElasticModulus, 6: RadialDistribution, 13: FrictionalPressure, 14: FrictionalViscosity,
                     15: FrictionalStress, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
 _NAMESPACES = {0: "sphere_drag_coefficients", 1: "terminal_velocities", 2: "richardson_zaki_exponents",
                3: "minimum_fluidizations", 4: "drag_laws", 5: "elastic_moduli", 6: "radial_distributions",

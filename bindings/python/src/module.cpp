@@ -165,6 +165,36 @@ void define_kernels(py::module_& m) {
   m.def("of_solid_fraction", [](const fb::NamedClosure& law, const Array<T>& phi, bool derivatives) {
     return one_argument<T>(law, phi, derivatives, fb::of_solid_fraction<T>);
   });
+  m.def("elastic_modulus_at_equilibrium",
+        [](const fb::NamedClosure& model, const Array<T>& voidage, const Array<T>& fluid_density,
+           const Array<T>& fluid_viscosity, const Array<T>& particle_density, const Array<T>& diameter,
+           const Array<T>& terminal_reynolds, const Array<T>& gravity, bool derivatives) {
+          const py::ssize_t n = voidage.size();
+          Array<T> value(n);
+          auto slope = output<T>(n, derivatives);
+          T* out = value.mutable_data();
+          guarded([&] {
+            fb::elastic_modulus_at_equilibrium<T>(model, static_cast<std::size_t>(n), voidage.data(),
+                                                  fluid_density.data(), fluid_viscosity.data(),
+                                                  particle_density.data(), diameter.data(), terminal_reynolds.data(),
+                                                  gravity.data(), out, data_of(slope));
+          });
+          return py::make_tuple(value, slope);
+        });
+  m.def("elastic_modulus_at_state", [](const fb::NamedClosure& model, const Array<T>& voidage, const Array<T>& slip,
+                                       const Array<T>& fluid_density, const Array<T>& fluid_viscosity,
+                                       const Array<T>& diameter, bool derivatives) {
+    const py::ssize_t n = voidage.size();
+    Array<T> value(n);
+    auto d_voidage = output<T>(n, derivatives), d_slip = output<T>(n, derivatives);
+    T* out = value.mutable_data();
+    guarded([&] {
+      fb::elastic_modulus_at_state<T>(model, static_cast<std::size_t>(n), voidage.data(), slip.data(),
+                                      fluid_density.data(), fluid_viscosity.data(), diameter.data(), out,
+                                      data_of(d_voidage), data_of(d_slip));
+    });
+    return py::make_tuple(value, d_voidage, d_slip);
+  });
   m.def("frictional_viscosity", [](const fb::NamedClosure& law, const Array<T>& pressure, const Array<T>& divergence,
                                    const Array<T>& contraction, bool derivatives) {
     const py::ssize_t n = pressure.size();

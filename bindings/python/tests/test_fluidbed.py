@@ -243,3 +243,25 @@ def test_inversion_statuses_shapes_and_errors():
         fluidbed.invert(np.ones(18))
     with pytest.raises(fluidbed.InvalidArgument, match="support must be"):
         fluidbed.invert(legendre, support="half_line")
+
+
+def test_elastic_moduli_bit_for_bit_with_the_c_interface():
+    g = 9.80665
+    for row in rows("elastic_state_reference.csv"):
+        x = {k: np.array([float(row[k])]) for k in ("fluid_density", "fluid_viscosity", "particle_density", "diameter",
+                                                    "voidage", "slip", "reynolds")}
+        for name in ("FoscoloGibilaroModulus", "JeanFanModulus", "MazzeiLettieriModulus"):
+            model = fluidbed.closure(name)
+            python = model.at_equilibrium(x["voidage"], x["fluid_density"], x["fluid_viscosity"],
+                                          x["particle_density"], x["diameter"], x["reynolds"], g, derivatives=True)
+            value, slope, gravity = np.empty(1), np.empty(1), np.array([g])
+            assert C.fluidbed_elastic_modulus_at_equilibrium(
+                c_closure(name), ctypes.c_size_t(1), ptr(x["voidage"]), ptr(x["fluid_density"]),
+                ptr(x["fluid_viscosity"]), ptr(x["particle_density"]), ptr(x["diameter"]), ptr(x["reynolds"]),
+                ptr(gravity), ptr(value), ptr(slope), None) == 0
+            assert same_bits(python.value, value) and same_bits(python.derivative, slope)
+    model = fluidbed.elastic_moduli.MazzeiLettieriModulus()
+    at_state = model.at_state(0.6, 0.01, 998.0, 1e-3, 2.5e-4, derivatives=True)
+    assert at_state.value > 0 and np.isfinite(at_state.d_slip)
+    with pytest.raises(fluidbed.InvalidArgument, match="defines no modulus off equilibrium"):
+        fluidbed.elastic_moduli.JeanFanModulus().at_state(0.6, 0.01, 998.0, 1e-3, 2.5e-4)
