@@ -44,7 +44,9 @@ typedef enum fluidbed_status {
                                      not finite: the checked C++ API's std::domain_error */
   FLUIDBED_INVALID_ARGUMENT = 4,  /* a NULL array or handle, a closure of another family, an unknown
                                      enumerator */
-  FLUIDBED_INTERNAL_ERROR = 5     /* anything else (out of memory) */
+  FLUIDBED_INTERNAL_ERROR = 5,    /* anything else (out of memory) */
+  FLUIDBED_STATUS_MAX_ENUM = 0x7fffffff  /* (every enumeration of this header spans int: any int a
+                                            caller passes is a value of the type, checked inside) */
 } fluidbed_status;
 
 #define FLUIDBED_MESSAGE_SIZE 512
@@ -80,7 +82,8 @@ typedef enum fluidbed_family {
   FLUIDBED_FRICTIONAL_STRESS = 15,
   FLUIDBED_GAS_EXCHANGE_SOURCE = 16,
   FLUIDBED_SOLID_SOLID_DRAG = 17,
-  FLUIDBED_FAMILY_COUNT = 18
+  FLUIDBED_FAMILY_COUNT = 18,
+  FLUIDBED_FAMILY_MAX_ENUM = 0x7fffffff
 } fluidbed_family;
 
 /* What the family's closures are ("drag law"), and their convention: the quantity, its units
@@ -139,7 +142,8 @@ FLUIDBED_C_API fluidbed_status fluidbed_closure_set_parameter(fluidbed_closure* 
  * β_pressure_gradient = ε β_classical. */
 typedef enum fluidbed_buoyancy {
   FLUIDBED_BUOYANCY_CLASSICAL = 0,
-  FLUIDBED_BUOYANCY_PRESSURE_GRADIENT = 1
+  FLUIDBED_BUOYANCY_PRESSURE_GRADIENT = 1,
+  FLUIDBED_BUOYANCY_MAX_ENUM = 0x7fffffff
 } fluidbed_buoyancy;
 
 /* beta[i] [kg m^-3 s^-1], the drag coefficient per unit volume of suspension in `convention`,
@@ -262,7 +266,8 @@ FLUIDBED_C_API fluidbed_status fluidbed_frictional_stress(const fluidbed_closure
 /* The support of the distributions: [0, ∞) (sizes, masses) or the real line (velocities). */
 typedef enum fluidbed_support {
   FLUIDBED_SUPPORT_POSITIVE_HALF_LINE = 0,
-  FLUIDBED_SUPPORT_REAL_LINE = 1
+  FLUIDBED_SUPPORT_REAL_LINE = 1,
+  FLUIDBED_SUPPORT_MAX_ENUM = 0x7fffffff
 } fluidbed_support;
 
 /* A cell's outcome (the C++ library's moments::InversionStatus). */
@@ -272,7 +277,8 @@ typedef enum fluidbed_inversion_status {
   FLUIDBED_INVERSION_ZERO_MASS = 2,       /* every moment 0: an empty cell, no nodes */
   FLUIDBED_INVERSION_NOT_REALIZABLE = 3,  /* not even one node */
   FLUIDBED_INVERSION_INVALID_INPUT = 4,   /* a moment NaN or infinite, or the set beyond the floating-point range */
-  FLUIDBED_INVERSION_EIGEN_FAILURE = 5    /* the eigen-solver did not converge (never observed for sizes) */
+  FLUIDBED_INVERSION_EIGEN_FAILURE = 5,   /* the eigen-solver did not converge (never observed for sizes) */
+  FLUIDBED_INVERSION_MAX_ENUM = 0x7fffffff
 } fluidbed_inversion_status;
 
 /* Inverts n cells, 2 node_count moments each (node_count from 1 to 8), to node_count-node Gauss

@@ -49,6 +49,7 @@ extern "C" const char* fluidbed_status_name(fluidbed_status status) {
     case FLUIDBED_DOMAIN_ERROR: return "FLUIDBED_DOMAIN_ERROR";
     case FLUIDBED_INVALID_ARGUMENT: return "FLUIDBED_INVALID_ARGUMENT";
     case FLUIDBED_INTERNAL_ERROR: return "FLUIDBED_INTERNAL_ERROR";
+    default: break;
   }
   return "unknown fluidbed_status";
 }

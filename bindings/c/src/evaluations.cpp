@@ -24,6 +24,7 @@ fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
   switch (convention) {
     case FLUIDBED_BUOYANCY_CLASSICAL: return fluidbed::drag::Buoyancy::classical;
     case FLUIDBED_BUOYANCY_PRESSURE_GRADIENT: return fluidbed::drag::Buoyancy::pressure_gradient;
+    default: break;
   }
   throw InvalidArgument("fluidbed: unknown fluidbed_buoyancy " + std::to_string(static_cast<int>(convention)));
 }
