@@ -7,10 +7,11 @@
 // evaluated from several threads at once.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <algorithm>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -21,6 +22,8 @@
 #include <vector>
 
 #include "fluidbed/moments/batched.hpp"
+#include "fluidbed/moments/correction.hpp"
+#include "fluidbed/moments/realizability.hpp"
 #include "fluidbed/registries.hpp"
 #include "fluidbed_c.h"
 #include "kinetic_theory_table_names.hpp"
@@ -476,6 +479,321 @@ TEST_CASE("C interface: the elastic moduli on the elastic reference states bit f
     }
   }
   CHECK(compared == 3 * table.size());
+}
+
+namespace {
+
+// The mixture radial distribution the mixture table names (lebowitz, mansoori, modified_mansoori).
+std::string mixture_name(const std::string& table_name) {
+  if (table_name == "lebowitz") return "Lebowitz";
+  if (table_name == "mansoori") return "Mansoori";
+  REQUIRE(table_name == "modified_mansoori");
+  return "ModifiedMansoori";
+}
+
+}  // namespace
+
+TEST_CASE("C interface: the mixture radial distributions and the solid-solid drag on every mixture reference row, bit for bit") {
+  const test::ReferenceTable table("ktgf_mixture_reference.csv");
+  struct Cells {
+    std::size_t classes = 0, i = 0, k = 0;
+    std::vector<std::size_t> rows;
+  };
+  std::map<std::string, Cells> groups;  // the rows one call evaluates: same closure, parameters, classes and pair
+  for (std::size_t row = 0; row < table.size(); ++row) {
+    Cells& g = groups[table.text(row, "function") + "|" + table.text(row, "variant") + "|" +
+                                 table.text(row, "classes") + "|" + table.text(row, "i") + "|" +
+                                 table.text(row, "k") + "|" + table.text(row, "max_packing") + "|" +
+                                 table.text(row, "friction_coefficient") + "|" + table.text(row, "restitution")];
+    g.classes = static_cast<std::size_t>(table.number(row, "classes"));
+    g.i = static_cast<std::size_t>(table.number(row, "i"));
+    g.k = static_cast<std::size_t>(table.number(row, "k"));
+    g.rows.push_back(row);
+  }
+  std::size_t rdf_rows = 0, drag_rows = 0;
+  for (const auto& [key, g] : groups) {
+    INFO(key);
+    const std::size_t first = g.rows.front(), n = g.rows.size(), classes = g.classes;
+    const auto [author, rdf_table_name] = test::split_variant(table.text(first, "variant"));
+    const bool drag = table.text(first, "function") == "solid_solid_drag";
+    const std::string rdf_name = mixture_name(drag ? rdf_table_name : author);
+    const Handle rdf = create(rdf_name);
+    const double max_packing = table.number(first, "max_packing");
+    if (rdf_name == "ModifiedMansoori") REQUIRE(fluidbed_closure_set_parameter(rdf.get(), "max_packing", max_packing, nullptr) == FLUIDBED_OK);
+    std::vector<double> fractions(classes * n), diameters(classes * n), g_ik(n), d_fractions(classes * n);
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t m = 0; m < classes; ++m) {
+        fractions[m * n + c] = table.number(g.rows[c], "phi" + std::to_string(m + 1));
+        diameters[m * n + c] = table.number(g.rows[c], "d" + std::to_string(m + 1));
+      }
+    REQUIRE(fluidbed_mixture_radial_distribution(rdf.get(), n, classes, g.i, g.k, fractions.data(), diameters.data(),
+                                                 g_ik.data(), d_fractions.data(), nullptr) == FLUIDBED_OK);
+    // The C++ checked calls, cell by cell (the derivatives from checked_with_derivatives of 3 classes
+    // at most, the table's).
+    const auto cpp = [&](auto law, std::size_t c) {
+      std::array<double, 3> phi{}, d{};
+      for (std::size_t m = 0; m < classes; ++m) phi[m] = fractions[m * n + c], d[m] = diameters[m * n + c];
+      const std::span<const double> ds(d.data(), classes);
+      const double value = law.checked(std::span<const double>(phi.data(), classes), ds, g.i, g.k);
+      const auto with = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+        std::array<double, N> p{};
+        std::copy_n(phi.begin(), N, p.begin());
+        const auto r = law.checked_with_derivatives(p, ds, g.i, g.k);
+        return std::vector<double>(r.d_fractions.begin(), r.d_fractions.end());
+      };
+      const std::vector<double> slopes = classes == 1   ? with(std::integral_constant<std::size_t, 1>{})
+                                         : classes == 2 ? with(std::integral_constant<std::size_t, 2>{})
+                                                        : with(std::integral_constant<std::size_t, 3>{});
+      CHECK(same_bits(g_ik[c], value));
+      for (std::size_t m = 0; m < classes; ++m) CHECK(same_bits(d_fractions[m * n + c], slopes[m]));
+    };
+    for (std::size_t c = 0; c < n; ++c) {
+      if (rdf_name == "Lebowitz") cpp(kinetic_theory::Lebowitz{}, c);
+      else if (rdf_name == "Mansoori") cpp(kinetic_theory::Mansoori{}, c);
+      else cpp(kinetic_theory::ModifiedMansoori{max_packing}, c);
+    }
+    if (!drag) {
+      for (std::size_t c = 0; c < n; ++c)  // and the table's independent values
+        CHECK(test::relative_difference(g_ik[c], table.number(g.rows[c], "value")) < 1e-13);
+      rdf_rows += n;
+      continue;
+    }
+    // K_ik of the row's pair with g_ik from the C call.
+    const Handle law = create("SyamlalSolidSolidDrag");
+    const double friction = table.number(first, "friction_coefficient"), e = table.number(first, "restitution");
+    REQUIRE(fluidbed_closure_set_parameter(law.get(), "friction_coefficient", friction, nullptr) == FLUIDBED_OK);
+    std::vector<double> phi_p(n), phi_q(n), rho_p(n), d_p(n), rho_q(n), d_q(n), restitution(n, e), speed(n), k_pq(n),
+        d_phi_p(n), d_phi_q(n), d_g(n), d_speed(n);
+    for (std::size_t c = 0; c < n; ++c) {
+      phi_p[c] = fractions[g.i * n + c], phi_q[c] = fractions[g.k * n + c];
+      d_p[c] = diameters[g.i * n + c], d_q[c] = diameters[g.k * n + c];
+      rho_p[c] = table.number(g.rows[c], "rho_i"), rho_q[c] = table.number(g.rows[c], "rho_k");
+      speed[c] = table.number(g.rows[c], "relative_speed");
+    }
+    REQUIRE(fluidbed_solid_solid_drag(law.get(), n, phi_p.data(), phi_q.data(), rho_p.data(), d_p.data(), rho_q.data(),
+                                      d_q.data(), restitution.data(), g_ik.data(), speed.data(), k_pq.data(),
+                                      d_phi_p.data(), d_phi_q.data(), d_g.data(), d_speed.data(),
+                                      nullptr) == FLUIDBED_OK);
+    const kinetic_theory::SyamlalSolidSolidDrag cpp_law{friction};
+    for (std::size_t c = 0; c < n; ++c) {
+      const Particles<double> p{rho_p[c], d_p[c]}, q{rho_q[c], d_q[c]};
+      CHECK(same_bits(k_pq[c], cpp_law.checked(phi_p[c], phi_q[c], p, q, e, g_ik[c], speed[c])));
+      const auto d = cpp_law.checked_with_derivatives(phi_p[c], phi_q[c], p, q, e, g_ik[c], speed[c]);
+      CHECK(same_bits(d_phi_p[c], d.d_phi_p));
+      CHECK(same_bits(d_phi_q[c], d.d_phi_q));
+      CHECK(same_bits(d_g[c], d.d_contact_rdf));
+      CHECK(same_bits(d_speed[c], d.d_relative_speed));
+      CHECK(test::relative_difference(k_pq[c], table.number(g.rows[c], "value")) < 1e-13);
+    }
+    drag_rows += n;
+  }
+  CHECK(rdf_rows + drag_rows == table.size());
+  CHECK(drag_rows >= 200);
+}
+
+TEST_CASE("C interface: the gas exchange sources on every source row of the exchange reference table, bit for bit") {
+  const test::ReferenceTable table("ktgf_exchange_reference.csv");
+  std::map<std::string, std::vector<std::size_t>> groups;  // by variant
+  for (std::size_t row = 0; row < table.size(); ++row)
+    if (table.text(row, "function") == "fluctuating_energy_source") groups[table.text(row, "variant")].push_back(row);
+  REQUIRE(groups.size() == 3);
+  std::size_t compared = 0;
+  for (const auto& [variant, rows] : groups) {
+    INFO(variant);
+    const auto [author, rdf_table_name] = test::split_variant(variant);
+    const bool koch_sangani = author == "koch_sangani";
+    const Handle law = create(koch_sangani ? "KochSanganiSource" : "DragFluctuationSource");
+    const Handle rdf = create(koch_sangani ? test::library_name(test::radial_distribution_names, rdf_table_name)
+                                           : "CarnahanStarling");
+    if (rdf_table_name == "ogawa")  // the tables' Ogawa: φ_max = 0.63
+      REQUIRE(fluidbed_closure_set_parameter(rdf.get(), "max_packing", 0.63, nullptr) == FLUIDBED_OK);
+    const std::size_t n = rows.size();
+    const auto column = [&](const char* name) {
+      std::vector<double> v(n);
+      for (std::size_t c = 0; c < n; ++c) v[c] = table.number(rows[c], name);
+      return v;
+    };
+    const std::vector<double> phi = column("solid_fraction"), theta = column("granular_temperature"),
+                              slip = column("slip"), beta = column("beta"), mu = column("gas_viscosity"),
+                              d = column("diameter"), rho = column("particle_density"), e = column("restitution");
+    std::vector<double> source(n), d_phi(n), d_theta(n), d_beta(n), d_slip(n);
+    // Each source reads only its own arguments: the other's are NULL.
+    REQUIRE(fluidbed_gas_exchange_source(law.get(), koch_sangani ? rdf.get() : nullptr, n, phi.data(), theta.data(),
+                                         slip.data(), koch_sangani ? nullptr : beta.data(),
+                                         koch_sangani ? mu.data() : nullptr, d.data(), rho.data(), e.data(),
+                                         source.data(), d_phi.data(), d_theta.data(), d_beta.data(), d_slip.data(),
+                                         nullptr) == FLUIDBED_OK);
+    for (std::size_t c = 0; c < n; ++c) {
+      const kinetic_theory::GranularMaterial<double> m{d[c], rho[c], e[c]};
+      kinetic_theory::GasExchangeDerivatives<double> expected{};
+      if (koch_sangani) {
+        const auto check_with = [&](const auto& g0) {
+          CHECK(same_bits(source[c], kinetic_theory::KochSanganiSource{}.checked(phi[c], theta[c], g0.checked(phi[c]),
+                                                                                 slip[c], mu[c], m)));
+          expected = kinetic_theory::KochSanganiSource{}.checked_with_derivatives(phi[c], theta[c], g0, slip[c], mu[c], m);
+        };
+        if (rdf_table_name == "ogawa") check_with(kinetic_theory::Ogawa{0.63});
+        else check_with(kinetic_theory::CarnahanStarling{});
+      } else {
+        const kinetic_theory::DragFluctuationSource s;
+        CHECK(same_bits(source[c], s.checked(phi[c], theta[c], beta[c], slip[c], m)));
+        expected = s.checked_with_derivatives(phi[c], theta[c], beta[c], slip[c], m);
+      }
+      CHECK(same_bits(d_phi[c], expected.d_solid_fraction));
+      CHECK(same_bits(d_theta[c], expected.d_granular_temperature));
+      CHECK(same_bits(d_beta[c], expected.d_beta));
+      CHECK(same_bits(d_slip[c], expected.d_slip));
+      CHECK(test::relative_difference(source[c], table.number(rows[c], "value")) < 1e-13);
+    }
+    compared += n;
+  }
+  CHECK(compared == 72);
+}
+
+TEST_CASE("C interface: realizability and correction of the moments reference sets and corrupted copies, bit for bit") {
+  const test::ReferenceTable table("moments_reference.csv");
+  std::map<std::string, std::vector<double>> sets;
+  for (std::size_t row = 0; row < table.size(); ++row)
+    if (table.text(row, "quantity") == "moment") {
+      std::vector<double>& m = sets[table.text(row, "case")];
+      const auto k = static_cast<std::size_t>(table.number(row, "index"));
+      if (m.size() <= k) m.resize(k + 1);
+      m[k] = table.number(row, "value");
+    }
+  // Each set, and copies with one moment k >= 1 multiplied by 1.3 or 0.6 (advection's corruption).
+  std::vector<std::vector<double>> all;
+  for (const auto& [name, m] : sets) {
+    all.push_back(m);
+    for (std::size_t k = 1; k < m.size(); ++k)
+      for (const double factor : {1.3, 0.6}) {
+        all.push_back(m);
+        all.back()[k] *= factor;
+      }
+  }
+  std::map<int, int> correction_statuses;
+  std::size_t compared = 0;
+  const auto compare = [&]<int N>(std::integral_constant<int, N>) {
+    for (const int count : {2 * N - 1, 2 * N}) {
+      std::vector<std::vector<double>> cells;
+      for (const auto& m : all)
+        if (m.size() >= std::size_t(count)) cells.emplace_back(m.begin(), m.begin() + count);
+      const std::size_t n = cells.size();
+      std::vector<double> in(count * n), failing(n), corrected(count * n);
+      std::vector<int> status(n), realizable(n), first_failing(n), corrected_status(n), corrected_realizable(n);
+      for (std::size_t c = 0; c < n; ++c)
+        for (int k = 0; k < count; ++k) in[k * n + c] = cells[c][k];
+      for (const fluidbed_support support : {FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE}) {
+        REQUIRE(fluidbed_moment_realizability(support, count, n, in.data(), status.data(), realizable.data(),
+                                              first_failing.data(), failing.data(), nullptr) == FLUIDBED_OK);
+        for (std::size_t c = 0; c < n; ++c) {
+          const auto r = moments::realizability<double, N>(
+              std::span<const double>(cells[c]),
+              support == FLUIDBED_SUPPORT_REAL_LINE ? moments::Support::real_line : moments::Support::positive_half_line);
+          CHECK(status[c] == int(r.status));
+          CHECK(realizable[c] == r.realizable_moments);
+          CHECK(first_failing[c] == r.first_failing_index);
+          CHECK(same_bits(failing[c], r.failing_value));
+        }
+      }
+      REQUIRE(fluidbed_correct_moments(count, n, in.data(), nullptr, corrected.data(), corrected_status.data(),
+                                       corrected_realizable.data(), nullptr) == FLUIDBED_OK);
+      for (std::size_t c = 0; c < n; ++c) {
+        const auto r = moments::correct_moments<double, N>(std::span<const double>(cells[c]));
+        CHECK(corrected_status[c] == int(r.status));
+        CHECK(corrected_realizable[c] == r.realizable_moments);
+        for (int k = 0; k < count; ++k) CHECK(same_bits(corrected[k * n + c], r.moments[k]));
+        ++correction_statuses[corrected_status[c]];
+      }
+      // In place, with options: the same as the C++ call with those options.
+      const fluidbed_correction_options options{3, 5, 1e-9};
+      std::vector<double> in_place = in;
+      REQUIRE(fluidbed_correct_moments(count, n, in_place.data(), &options, in_place.data(), corrected_status.data(),
+                                       nullptr, nullptr) == FLUIDBED_OK);
+      for (std::size_t c = 0; c < n; ++c) {
+        const auto r = moments::correct_moments<double, N>(std::span<const double>(cells[c]), {3, 5, 1e-9});
+        CHECK(corrected_status[c] == int(r.status));
+        for (int k = 0; k < count; ++k) CHECK(same_bits(in_place[k * n + c], r.moments[k]));
+      }
+      compared += n;
+    }
+  };
+  [&]<int... M>(std::integer_sequence<int, M...>) {
+    (compare(std::integral_constant<int, M + 1>{}), ...);
+  }(std::make_integer_sequence<int, 8>{});
+  CHECK(compared > 1000);
+  // The corrupted copies reach every correction but the empty cell's and the failure's.
+  for (const auto status : {FLUIDBED_CORRECTION_UNCHANGED, FLUIDBED_CORRECTION_MCGRAW, FLUIDBED_CORRECTION_LOGNORMAL,
+                            FLUIDBED_CORRECTION_MONODISPERSE})
+    CHECK(correction_statuses[status] > 0);
+  const fluidbed_correction_options defaults = fluidbed_correction_default_options();
+  CHECK(defaults.protected_moments == 1);
+  CHECK(defaults.max_iterations == 20);
+  CHECK(defaults.degenerate_tolerance == std::cbrt(std::numeric_limits<double>::epsilon()));
+}
+
+TEST_CASE("C interface: bad input to the mixture, exchange and moment functions") {
+  fluidbed_error error{};
+  const Handle lebowitz = create("Lebowitz");
+  const double fractions[] = {0.2, 0.3, std::numeric_limits<double>::quiet_NaN(), 0.1};  // 2 cells, 2 classes
+  const double diameters[] = {1e-4, 1e-4, 2e-4, 2e-4};
+  double g[2] = {-1, -1}, slopes[4];
+  CHECK(fluidbed_mixture_radial_distribution(lebowitz.get(), 2, 2, 0, 1, fractions, diameters, g, slopes, &error) ==
+        FLUIDBED_DOMAIN_ERROR);
+  CHECK(error.index == 0);  // class 1 of cell 0 is NaN
+  CHECK(std::string(error.message).find("fractions[1]") != std::string::npos);
+  CHECK(g[0] == -1);
+  CHECK(fluidbed_mixture_radial_distribution(lebowitz.get(), 2, 2, 0, 2, diameters, diameters, g, nullptr, &error) ==
+        FLUIDBED_DOMAIN_ERROR);  // k beyond the classes: the checked API's error
+  CHECK(std::string(error.message).find("'k' = 2") != std::string::npos);
+  for (const std::size_t classes : {std::size_t(0), std::size_t(FLUIDBED_MAX_CLASSES + 1)}) {
+    CHECK(fluidbed_mixture_radial_distribution(lebowitz.get(), 1, classes, 0, 0, diameters, diameters, g, nullptr,
+                                               &error) == FLUIDBED_INVALID_ARGUMENT);
+    CHECK(std::string(error.message).ends_with("classes; 1 to 10 are offered"));
+  }
+  const Handle source = create("KochSanganiSource"), drag_source = create("DragFluctuationSource"),
+               carnahan = create("CarnahanStarling");
+  const double one[] = {0.3}, theta[] = {1e-3}, negative[] = {-1.0}, d[] = {3e-4}, rho[] = {2500}, e[] = {0.9};
+  double out[1];
+  // Koch-Sangani needs its radial distribution and the gas viscosity, the drag-based source β.
+  CHECK(fluidbed_gas_exchange_source(source.get(), nullptr, 1, one, theta, one, nullptr, one, d, rho, e, out, nullptr,
+                                     nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_gas_exchange_source(source.get(), carnahan.get(), 1, one, theta, one, nullptr, nullptr, d, rho, e, out,
+                                     nullptr, nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_gas_exchange_source(drag_source.get(), nullptr, 1, one, theta, one, nullptr, nullptr, d, rho, e, out,
+                                     nullptr, nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_gas_exchange_source(drag_source.get(), nullptr, 1, one, theta, negative, one, nullptr, d, rho, e, out,
+                                     nullptr, nullptr, nullptr, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(std::string(error.message).find("slip") != std::string::npos);
+  CHECK(fluidbed_gas_exchange_source(lebowitz.get(), nullptr, 1, one, theta, one, one, one, d, rho, e, out, nullptr,
+                                     nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(std::string(error.message) == "fluidbed: gas_exchange_source: Lebowitz is not a gas exchange source");
+  const Handle syamlal = create("SyamlalSolidSolidDrag");
+  CHECK(fluidbed_solid_solid_drag(syamlal.get(), 1, one, one, rho, d, rho, d, e, negative, one, out, nullptr, nullptr,
+                                  nullptr, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(std::string(error.message).find("contact_rdf") != std::string::npos);
+  // Moment counts outside 1 … 16 and options outside their domain are errors; cells are statuses.
+  const double m[] = {1.0, 2.0};
+  int status[1], realizable[1];
+  double corrected[2];
+  for (const int count : {0, 17}) {
+    CHECK(fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, count, 1, m, status, realizable, nullptr,
+                                        nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+    CHECK(fluidbed_correct_moments(count, 1, m, nullptr, corrected, status, nullptr, &error) ==
+          FLUIDBED_INVALID_ARGUMENT);
+  }
+  CHECK(fluidbed_moment_realizability(static_cast<fluidbed_support>(2), 2, 1, m, status, realizable, nullptr, nullptr,
+                                      &error) == FLUIDBED_INVALID_ARGUMENT);
+  const fluidbed_correction_options bad[] = {{0, 20, 1e-6}, {1, -1, 1e-6}, {1, 20, -1.0},
+                                             {1, 20, std::numeric_limits<double>::quiet_NaN()}};
+  for (const auto& options : bad) {
+    CHECK(fluidbed_correct_moments(2, 1, m, &options, corrected, status, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+    CHECK(std::string(error.message).starts_with("fluidbed::moments::correct_moments: argument '"));
+  }
+  const double nan_set[] = {1.0, std::numeric_limits<double>::quiet_NaN()};
+  CHECK(fluidbed_correct_moments(1, 2, nan_set, nullptr, corrected, status, nullptr, &error) == FLUIDBED_OK);
+  CHECK(fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, 2, 1, nan_set, status, realizable, nullptr,
+                                      nullptr, &error) == FLUIDBED_OK);
+  CHECK(status[0] == FLUIDBED_INVERSION_INVALID_INPUT);
 }
 
 TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {

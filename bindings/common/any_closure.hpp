@@ -114,20 +114,24 @@ inline NamedClosure make_closure(std::string_view name) {
   throw UnknownName("fluidbed: unknown closure '" + std::string(name) + "'; known: " + known);
 }
 
-// What a family's closures are ("drag law") and their convention.
-inline std::string_view family_what(std::size_t family) {
+// text(std::type_identity<Family>{}) of the family description of registry `family`; empty for
+// an index that is not a family's.
+template <class Text>
+std::string_view family_text(std::size_t family, const Text& text) {
   return [&]<std::size_t... f>(std::index_sequence<f...>) {
-    std::string_view what;
-    static_cast<void>(((family == f ? (what = RegistryOf<f>::family::what, true) : false) || ...));
-    return what;
+    std::string_view found;
+    static_cast<void>(
+        ((family == f ? (found = text(std::type_identity<typename RegistryOf<f>::family>{}), true) : false) || ...));
+    return found;
   }(std::make_index_sequence<family_count>{});
 }
+
+// What a family's closures are ("drag law") and their convention.
+inline std::string_view family_what(std::size_t family) {
+  return family_text(family, []<class Family>(std::type_identity<Family>) { return Family::what; });
+}
 inline std::string_view family_convention(std::size_t family) {
-  return [&]<std::size_t... f>(std::index_sequence<f...>) {
-    std::string_view convention;
-    static_cast<void>(((family == f ? (convention = RegistryOf<f>::family::convention, true) : false) || ...));
-    return convention;
-  }(std::make_index_sequence<family_count>{});
+  return family_text(family, []<class Family>(std::type_identity<Family>) { return Family::convention; });
 }
 
 // The closure of family `family`, or InvalidArgument naming what `function` expected.

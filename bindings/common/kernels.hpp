@@ -6,7 +6,9 @@
 // Outputs documented as optional may be null. Internal to the bindings: not installed.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -17,6 +19,8 @@
 
 #include "any_closure.hpp"
 #include "fluidbed/moments/batched.hpp"
+#include "fluidbed/moments/correction.hpp"
+#include "fluidbed/moments/realizability.hpp"
 
 namespace fluidbed::bindings {
 
@@ -273,6 +277,133 @@ void elastic_modulus_at_state(const NamedClosure& model, std::size_t n, const T*
       closure);
 }
 
+// The largest number of solids classes of the mixture kernels (MFiX's default number of solids
+// phases): ∂g_ik/∂φ_m is computed with a dual number per class, whose size is compiled.
+inline constexpr std::size_t max_classes = 10;
+
+namespace detail {
+
+template <std::size_t count>
+using Count = std::integral_constant<std::size_t, count>;
+
+// Calls f(Count<count>{}) for a run-time count in [1, max].
+template <std::size_t max, class F>
+void with_compiled_count(std::size_t count, F&& f) {
+  [&]<std::size_t... c>(std::index_sequence<c...>) {
+    static_cast<void>(((count == c + 1 ? (f(Count<c + 1>{}), true) : false) || ...));
+  }(std::make_index_sequence<max>{});
+}
+
+}  // namespace detail
+
+// g_ik of a mixture radial distribution over n cells of class_count classes (fractions[m n + c],
+// diameters[m n + c]), and ∂g_ik/∂φ_m at d_fractions[m n + c]. The checked API validates i, k, the
+// fractions and the diameters of every cell.
+template <class T>
+void mixture_radial_distribution(const NamedClosure& law, std::size_t n, std::size_t class_count, std::size_t i,
+                                 std::size_t k, const T* fractions, const T* diameters, T* value, T* d_fractions) {
+  const auto& closure = family_closure<mixture_radial_distributions>(law, "mixture_radial_distribution");
+  if (class_count < 1 || class_count > max_classes)
+    throw InvalidArgument("fluidbed: mixture_radial_distribution: " + std::to_string(class_count) +
+                          " classes; 1 to " + std::to_string(max_classes) + " are offered");
+  require_arrays(n, "mixture_radial_distribution", fractions, diameters, value);
+  detail::with_compiled_count<max_classes>(class_count, [&]<std::size_t classes>(detail::Count<classes>) {
+    std::visit(
+        [&](const auto& l) {
+          for_each_cell(n, [&](std::size_t c) {
+            std::array<T, classes> phi{}, d{};
+            for (std::size_t m = 0; m < classes; ++m) phi[m] = fractions[m * n + c], d[m] = diameters[m * n + c];
+            value[c] = l.checked(std::span<const T>(phi), std::span<const T>(d), i, k);
+            if (d_fractions == nullptr) return;
+            const auto with = l.checked_with_derivatives(phi, std::span<const T>(d), i, k);
+            for (std::size_t m = 0; m < classes; ++m) d_fractions[m * n + c] = with.d_fractions[m];
+          });
+        },
+        closure);
+  });
+}
+
+// K_pq of a solid-solid drag, and its derivatives in φ_p, φ_q, g_pq and |Δv|.
+template <class T>
+void solid_solid_drag(const NamedClosure& law, std::size_t n, const T* phi_p, const T* phi_q, const T* density_p,
+                      const T* diameter_p, const T* density_q, const T* diameter_q, const T* restitution,
+                      const T* contact_rdf, const T* relative_speed, T* coefficient, T* d_phi_p, T* d_phi_q,
+                      T* d_contact_rdf, T* d_relative_speed) {
+  const auto& closure = family_closure<solid_solid_drags>(law, "solid_solid_drag");
+  require_arrays(n, "solid_solid_drag", phi_p, phi_q, density_p, diameter_p, density_q, diameter_q, restitution,
+                 contact_rdf, relative_speed, coefficient);
+  const bool derivatives = d_phi_p != nullptr || d_phi_q != nullptr || d_contact_rdf != nullptr ||
+                           d_relative_speed != nullptr;
+  std::visit(
+      [&](const auto& l) {
+        for_each_cell(n, [&](std::size_t c) {
+          const Particles<T> p{density_p[c], diameter_p[c]}, q{density_q[c], diameter_q[c]};
+          coefficient[c] = l.checked(phi_p[c], phi_q[c], p, q, restitution[c], contact_rdf[c], relative_speed[c]);
+          if (!derivatives) return;
+          const auto d =
+              l.checked_with_derivatives(phi_p[c], phi_q[c], p, q, restitution[c], contact_rdf[c], relative_speed[c]);
+          if (d_phi_p != nullptr) d_phi_p[c] = d.d_phi_p;
+          if (d_phi_q != nullptr) d_phi_q[c] = d.d_phi_q;
+          if (d_contact_rdf != nullptr) d_contact_rdf[c] = d.d_contact_rdf;
+          if (d_relative_speed != nullptr) d_relative_speed[c] = d.d_relative_speed;
+        });
+      },
+      closure);
+}
+
+// The gas's production of granular energy and its derivatives in φ, Θ, β and w. Each source reads
+// its own arguments: Koch–Sangani the radial distribution and μ_g, the drag-based source β; the
+// other's may be null.
+template <class T>
+void gas_exchange_source(const NamedClosure& law, const NamedClosure* radial, std::size_t n, const T* phi,
+                         const T* theta, const T* slip, const T* beta, const T* gas_viscosity, const T* diameter,
+                         const T* solid_density, const T* restitution, T* source, T* d_phi, T* d_theta, T* d_beta,
+                         T* d_slip) {
+  const auto& closure = family_closure<gas_exchange_sources>(law, "gas_exchange_source");
+  require_arrays(n, "gas_exchange_source", phi, theta, slip, diameter, solid_density, restitution, source);
+  const bool derivatives = d_phi != nullptr || d_theta != nullptr || d_beta != nullptr || d_slip != nullptr;
+  // Every cell's value and, if asked, its derivatives through `evaluate(material, cell)`.
+  const auto over_cells = [&](const auto& value_of, const auto& derivatives_of) {
+    for_each_cell(n, [&](std::size_t c) {
+      const kinetic_theory::GranularMaterial<T> material{diameter[c], solid_density[c], restitution[c]};
+      source[c] = value_of(material, c);
+      if (!derivatives) return;
+      const kinetic_theory::GasExchangeDerivatives<T> d = derivatives_of(material, c);
+      if (d_phi != nullptr) d_phi[c] = d.d_solid_fraction;
+      if (d_theta != nullptr) d_theta[c] = d.d_granular_temperature;
+      if (d_beta != nullptr) d_beta[c] = d.d_beta;
+      if (d_slip != nullptr) d_slip[c] = d.d_slip;
+    });
+  };
+  std::visit(
+      [&]<class Source>(const Source& s) {
+        if constexpr (std::is_same_v<Source, kinetic_theory::KochSanganiSource>) {
+          if (radial == nullptr)
+            throw InvalidArgument("fluidbed: gas_exchange_source: " + law.name + " needs a radial distribution");
+          require_arrays(n, "gas_exchange_source", gas_viscosity);
+          std::visit(
+              [&](const auto& g0) {
+                over_cells(
+                    [&](const auto& m, std::size_t c) {
+                      return s.checked(phi[c], theta[c], g0.checked(phi[c]), slip[c], gas_viscosity[c], m);
+                    },
+                    [&](const auto& m, std::size_t c) {
+                      return s.checked_with_derivatives(phi[c], theta[c], g0, slip[c], gas_viscosity[c], m);
+                    });
+              },
+              family_closure<radial_distributions>(*radial, "gas_exchange_source"));
+        } else {
+          static_assert(std::is_same_v<Source, kinetic_theory::DragFluctuationSource>, "a source of new arguments");
+          require_arrays(n, "gas_exchange_source", beta);
+          over_cells([&](const auto& m, std::size_t c) { return s.checked(phi[c], theta[c], beta[c], slip[c], m); },
+                     [&](const auto& m, std::size_t c) {
+                       return s.checked_with_derivatives(phi[c], theta[c], beta[c], slip[c], m);
+                     });
+        }
+      },
+      closure);
+}
+
 // The largest node count the bindings invert for (fluidbed::moments handles any N; the bindings
 // dispatch a run-time count to the compiled ones).
 inline constexpr int max_nodes = 8;
@@ -310,13 +441,82 @@ void invert_moments(int node_count, moments::Support support, std::size_t n, con
     throw InvalidArgument("fluidbed: invert_moments: " + std::to_string(node_count) + " nodes; 1 to " +
                           std::to_string(max_nodes) + " are offered");
   require_arrays(n, "invert_moments", moments_in, nodes, weights, sizes, statuses);
-  [&]<int... N>(std::integer_sequence<int, N...>) {
-    static_cast<void>(
-        ((node_count == N + 1
-              ? (detail::invert_moments<T, N + 1>(support, n, moments_in, nodes, weights, sizes, statuses), true)
-              : false) ||
-         ...));
-  }(std::make_integer_sequence<int, max_nodes>{});
+  detail::with_compiled_count<max_nodes>(std::size_t(node_count), [&]<std::size_t N>(detail::Count<N>) {
+    detail::invert_moments<T, int(N)>(support, n, moments_in, nodes, weights, sizes, statuses);
+  });
+}
+
+namespace detail {
+
+// Throws InvalidArgument unless 1 <= moment_count <= 2 max_nodes.
+inline void require_moment_count(int moment_count, std::string_view function) {
+  if (moment_count < 1 || moment_count > 2 * max_nodes)
+    throw InvalidArgument("fluidbed: " + std::string(function) + ": " + std::to_string(moment_count) +
+                          " moments; 1 to " + std::to_string(2 * max_nodes) + " are offered");
+}
+
+// f(cell's moments as a span, integral_constant N) for each of n cells of moment_count moments
+// (moment k of cell c at moments_in[k n + c]), N = ⌈moment_count/2⌉ the compiled node count.
+template <class T, class F>
+void for_each_moment_set(int moment_count, std::size_t n, const T* moments_in, F&& f) {
+  with_compiled_count<max_nodes>(std::size_t(moment_count + 1) / 2, [&]<std::size_t N>(Count<N> nodes) {
+    std::array<T, 2 * N> m{};
+    for (std::size_t c = 0; c < n; ++c) {
+      for (std::size_t k = 0; k < std::size_t(moment_count); ++k) m[k] = moments_in[k * n + c];
+      f(c, std::span<const T>(m.data(), std::size_t(moment_count)), nodes);
+    }
+  });
+}
+
+}  // namespace detail
+
+// The realizability of n cells' moment sets (moments::realizability): the status
+// (moments::InversionStatus as int), the realizable prefix's length and, optionally, the first
+// failing coefficient's index and value. A cell's outcome is its status, never an exception.
+template <class T>
+void moment_realizability(moments::Support support, int moment_count, std::size_t n, const T* moments_in,
+                          int* statuses, int* realizable_moments, int* first_failing_index, T* failing_value) {
+  detail::require_moment_count(moment_count, "moment_realizability");
+  require_arrays(n, "moment_realizability", moments_in, statuses, realizable_moments);
+  const auto assess = [&]<std::size_t N>(std::size_t c, std::span<const T> m, detail::Count<N>) {
+    const auto report = moments::realizability<T, int(N)>(m, support);
+    statuses[c] = static_cast<int>(report.status);
+    realizable_moments[c] = report.realizable_moments;
+    if (first_failing_index != nullptr) first_failing_index[c] = report.first_failing_index;
+    if (failing_value != nullptr) failing_value[c] = report.failing_value;
+  };
+  detail::for_each_moment_set(moment_count, n, moments_in, assess);
+}
+
+// The options of the correction, or std::domain_error naming the first out of its domain.
+template <class T>
+void require_valid(const moments::CorrectionOptions<T>& options) {
+  constexpr std::string_view function = "moments::correct_moments";
+  if (options.protected_moments < 1)
+    fluidbed::detail::throw_domain_error(function, "protected_moments", options.protected_moments, "must be >= 1");
+  if (options.max_iterations < 0)
+    fluidbed::detail::throw_domain_error(function, "max_iterations", options.max_iterations, "must be >= 0");
+  if (!(options.degenerate_tolerance >= T(0) && options.degenerate_tolerance < std::numeric_limits<T>::infinity()))
+    fluidbed::detail::throw_domain_error(function, "degenerate_tolerance", options.degenerate_tolerance,
+                                         "must be finite and >= 0");
+}
+
+// The correction of n cells' size moment sets (moments::correct_moments) into `corrected` (laid
+// out as moments_in, which it may be), the status (moments::CorrectionStatus as int) and,
+// optionally, the realizable prefix of the returned set.
+template <class T>
+void correct_moments(int moment_count, std::size_t n, const T* moments_in, const moments::CorrectionOptions<T>& options,
+                     T* corrected, int* statuses, int* realizable_moments) {
+  detail::require_moment_count(moment_count, "correct_moments");
+  require_arrays(n, "correct_moments", moments_in, corrected, statuses);
+  require_valid(options);
+  const auto correct = [&]<std::size_t N>(std::size_t c, std::span<const T> m, detail::Count<N>) {
+    const auto result = moments::correct_moments<T, int(N)>(m, options);
+    for (std::size_t k = 0; k < m.size(); ++k) corrected[k * n + c] = result.moments[k];
+    statuses[c] = static_cast<int>(result.status);
+    if (realizable_moments != nullptr) realizable_moments[c] = result.realizable_moments;
+  };
+  detail::for_each_moment_set(moment_count, n, moments_in, correct);
 }
 
 }  // namespace fluidbed::bindings

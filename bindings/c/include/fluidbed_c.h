@@ -261,6 +261,54 @@ FLUIDBED_C_API fluidbed_status fluidbed_frictional_stress(const fluidbed_closure
                                                           double* viscosity, double* d_pressure, double* d_viscosity,
                                                           fluidbed_error* error);
 
+/* ---- Kinetic theory of several classes --------------------------------------------------------- */
+
+/* The largest number of solids classes the mixture functions take (MFiX's default number of
+ * solids phases). */
+#define FLUIDBED_MAX_CLASSES 10
+
+/* FLUIDBED_MIXTURE_RADIAL_DISTRIBUTION: value[c] = g_ik, the contact value between a particle of
+ * class i and one of class k (0-based, below class_count, 1 to FLUIDBED_MAX_CLASSES), of cell c
+ * whose class m has the solids volume fraction fractions[m n + c] = φ_m >= 0 (Σ φ_m < 1) and the
+ * diameter diameters[m n + c] = d_m > 0 [m]; if not NULL, d_fractions[m n + c] = ∂g_ik/∂φ_m. */
+FLUIDBED_C_API fluidbed_status fluidbed_mixture_radial_distribution(const fluidbed_closure* law, size_t n,
+                                                                    size_t class_count, size_t i, size_t k,
+                                                                    const double* fractions, const double* diameters,
+                                                                    double* value, double* d_fractions,
+                                                                    fluidbed_error* error);
+
+/* FLUIDBED_SOLID_SOLID_DRAG: the momentum exchange coefficient K_pq [kg m^-3 s^-1] between classes
+ * p and q per unit volume of suspension (the force per unit volume on class p is K_pq (v_q − v_p);
+ * K_pq = K_qp) at their volume fractions phi_p[i], phi_q[i] ∈ [0, 1), their particles' densities
+ * [kg m^-3] and diameters [m] (> 0), the restitution coefficient of their collisions ∈ [0, 1], their
+ * contact value g_pq = contact_rdf[i] > 0 (fluidbed_mixture_radial_distribution) and their relative
+ * speed |v_p − v_q| = relative_speed[i] >= 0 [m/s]; if not NULL, its derivatives in phi_p, phi_q,
+ * g_pq and the relative speed. */
+FLUIDBED_C_API fluidbed_status fluidbed_solid_solid_drag(const fluidbed_closure* law, size_t n, const double* phi_p,
+                                                         const double* phi_q, const double* density_p,
+                                                         const double* diameter_p, const double* density_q,
+                                                         const double* diameter_q, const double* restitution,
+                                                         const double* contact_rdf, const double* relative_speed,
+                                                         double* coefficient, double* d_phi_p, double* d_phi_q,
+                                                         double* d_contact_rdf, double* d_relative_speed,
+                                                         fluidbed_error* error);
+
+/* FLUIDBED_GAS_EXCHANGE_SOURCE: the production of granular energy by the gas, source[i] [W m^-3]
+ * (positive, a term on the right-hand side of the granular energy balance), at the solids volume
+ * fraction solid_fraction[i] = φ, the granular temperature Θ [m^2 s^-2], the slip speed
+ * |u_g − u_s| = slip[i] [m/s] and the material {diameter [m], solid_density [kg m^-3],
+ * restitution}. Each source reads its own further arguments, and those of the other may be NULL:
+ * KochSanganiSource the radial distribution `radial` (for g0(φ)) and gas_viscosity[i] [Pa s];
+ * DragFluctuationSource the drag coefficient beta[i] [kg m^-3 s^-1] of the host's momentum
+ * equation. If not NULL, the derivatives ∂/∂φ (through g0 as well), ∂/∂Θ, ∂/∂β (0 for
+ * Koch–Sangani) and ∂/∂w. (The gas's damping of the fluctuations, −3 β Θ, is not a closure.) */
+FLUIDBED_C_API fluidbed_status fluidbed_gas_exchange_source(
+    const fluidbed_closure* law, const fluidbed_closure* radial, size_t n, const double* solid_fraction,
+    const double* granular_temperature, const double* slip, const double* beta, const double* gas_viscosity,
+    const double* diameter, const double* solid_density, const double* restitution, double* source,
+    double* d_solid_fraction, double* d_granular_temperature, double* d_beta, double* d_slip,
+    fluidbed_error* error);
+
 /* ---- Moment inversion ------------------------------------------------------------------------- */
 
 /* The support of the distributions: [0, ∞) (sizes, masses) or the real line (velocities). */
@@ -269,6 +317,9 @@ typedef enum fluidbed_support {
   FLUIDBED_SUPPORT_REAL_LINE = 1,
   FLUIDBED_SUPPORT_MAX_ENUM = 0x7fffffff
 } fluidbed_support;
+
+/* The largest node count of the moment functions (2 FLUIDBED_MAX_NODES moments). */
+#define FLUIDBED_MAX_NODES 8
 
 /* A cell's outcome (the C++ library's moments::InversionStatus). */
 typedef enum fluidbed_inversion_status {
@@ -281,16 +332,69 @@ typedef enum fluidbed_inversion_status {
   FLUIDBED_INVERSION_MAX_ENUM = 0x7fffffff
 } fluidbed_inversion_status;
 
-/* Inverts n cells, 2 node_count moments each (node_count from 1 to 8), to node_count-node Gauss
- * rules, as a CFD code stores the fields: moment k of cell c at moments[k n + c]; writes node i of
- * cell c at nodes[i n + c] (ascending in i) and its weight at weights[i n + c] (0 for i >=
- * sizes[c]), the node count sizes[c] and the cell's status[c] (a fluidbed_inversion_status). The
- * results and statuses are those of the C++ moments::invert_batched, bit for bit. A cell that
- * cannot be inverted has its status and the function still returns FLUIDBED_OK; only a node count
- * out of range or a NULL array is an error (FLUIDBED_INVALID_ARGUMENT). */
+/* Inverts n cells, 2 node_count moments each (node_count from 1 to FLUIDBED_MAX_NODES), to
+ * node_count-node Gauss rules, as a CFD code stores the fields: moment k of cell c at
+ * moments[k n + c]; writes node i of cell c at nodes[i n + c] (ascending in i) and its weight at
+ * weights[i n + c] (0 for i >= sizes[c]), the node count sizes[c] and the cell's status[c] (a
+ * fluidbed_inversion_status). The results and statuses are those of the C++
+ * moments::invert_batched, bit for bit. A cell that cannot be inverted has its status and the
+ * function still returns FLUIDBED_OK; only a node count out of range or a NULL array is an error
+ * (FLUIDBED_INVALID_ARGUMENT). */
 FLUIDBED_C_API fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_support support, size_t n,
                                                        const double* moments, double* nodes, double* weights,
                                                        int* sizes, int* status, fluidbed_error* error);
+
+/* The realizability of n cells' moment sets m_0 … m_{moment_count−1} (moment_count from 1 to
+ * 2 FLUIDBED_MAX_NODES; moment k of cell c at moments[k n + c]) on the support, by the signs of
+ * the recurrence's coefficients (no threshold): the cell's status[c] (a fluidbed_inversion_status:
+ * ok when the whole set is realizable, reduced when only a prefix is) and the length R of the
+ * realizable prefix m_0 … m_{R−1}, realizable_moments[c] (the Gauss rule then has R/2 nodes); if
+ * not NULL, first_failing_index[c], j for the first ζ_j <= 0 on [0, ∞) or k for the first β_k <= 0
+ * on the real line (0 where none fails), and failing_value[c], that coefficient in the caller's
+ * units (m_0 itself when m_0 <= 0). The C++ moments::realizability, bit for bit. As with the
+ * inversion, a cell's outcome is its status, never an error. */
+FLUIDBED_C_API fluidbed_status fluidbed_moment_realizability(fluidbed_support support, int moment_count, size_t n,
+                                                             const double* moments, int* status,
+                                                             int* realizable_moments, int* first_failing_index,
+                                                             double* failing_value, fluidbed_error* error);
+
+/* A cell's outcome of the correction (the C++ library's moments::CorrectionStatus). */
+typedef enum fluidbed_correction_status {
+  FLUIDBED_CORRECTION_UNCHANGED = 0,     /* realizable as given, or on the boundary within round-off */
+  FLUIDBED_CORRECTION_MCGRAW = 1,        /* made realizable by McGraw's iterations */
+  FLUIDBED_CORRECTION_LOGNORMAL = 2,     /* replaced above m_2 by the log-normal sharing m_0, m_1, m_2 */
+  FLUIDBED_CORRECTION_MONODISPERSE = 3,  /* m_0 m_2 < m_1^2: replaced by m_0 r^k, r = m_1/m_0 */
+  FLUIDBED_CORRECTION_ZERO_MASS = 4,     /* every moment 0: nothing to correct */
+  FLUIDBED_CORRECTION_FAILED = 5,        /* NaN or ±∞, m_0 <= 0 or m_1 <= 0, or no correction
+                                            representable: the moments returned as given */
+  FLUIDBED_CORRECTION_MAX_ENUM = 0x7fffffff
+} fluidbed_correction_status;
+
+/* The correction's options (the C++ moments::CorrectionOptions<double>):
+ * protected_moments >= 1, the moments m_0 … m_{protected_moments−1} McGraw never changes;
+ * max_iterations >= 0 of McGraw's; degenerate_tolerance >= 0, the relative distance from the
+ * boundary of moment space (|ζ_j| <= tolerance ζ_1) within which a set is left unchanged. */
+typedef struct fluidbed_correction_options {
+  int protected_moments;
+  int max_iterations;
+  double degenerate_tolerance;
+} fluidbed_correction_options;
+
+/* The library's defaults: 1, 20, and the cube root of double's machine epsilon. */
+FLUIDBED_C_API fluidbed_correction_options fluidbed_correction_default_options(void);
+
+/* Corrects n cells' size moment sets (on [0, ∞); moment_count from 1 to 2 FLUIDBED_MAX_NODES,
+ * moment k of cell c at moments[k n + c]) made unrealizable by their transport: McGraw's (2006)
+ * iterations toward a smooth ln m_k, the realizability test, and the log-normal sharing m_0, m_1,
+ * m_2 as the fallback (docs/closures/moments.md).
+ * Writes the corrected set to corrected (laid out as moments; it may be the moments array itself),
+ * the cell's status[c] (a fluidbed_correction_status) and, if not NULL, realizable_moments[c] of
+ * the returned set. options NULL: the defaults; options outside their domain:
+ * FLUIDBED_DOMAIN_ERROR, nothing written. The C++ moments::correct_moments, bit for bit. */
+FLUIDBED_C_API fluidbed_status fluidbed_correct_moments(int moment_count, size_t n, const double* moments,
+                                                        const fluidbed_correction_options* options,
+                                                        double* corrected, int* status, int* realizable_moments,
+                                                        fluidbed_error* error);
 
 #ifdef __cplusplus
 }

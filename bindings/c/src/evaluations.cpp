@@ -29,6 +29,27 @@ fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
   throw InvalidArgument("fluidbed: unknown fluidbed_buoyancy " + std::to_string(static_cast<int>(convention)));
 }
 
+fluidbed::moments::Support support_of(fluidbed_support support) {
+  switch (support) {
+    case FLUIDBED_SUPPORT_POSITIVE_HALF_LINE: return fluidbed::moments::Support::positive_half_line;
+    case FLUIDBED_SUPPORT_REAL_LINE: return fluidbed::moments::Support::real_line;
+    default: break;
+  }
+  throw InvalidArgument("fluidbed: unknown fluidbed_support " + std::to_string(static_cast<int>(support)));
+}
+
+using fluidbed::moments::CorrectionStatus;
+static_assert(FLUIDBED_CORRECTION_UNCHANGED == int(CorrectionStatus::unchanged) &&
+                  FLUIDBED_CORRECTION_MCGRAW == int(CorrectionStatus::mcgraw) &&
+                  FLUIDBED_CORRECTION_LOGNORMAL == int(CorrectionStatus::lognormal) &&
+                  FLUIDBED_CORRECTION_MONODISPERSE == int(CorrectionStatus::monodisperse) &&
+                  FLUIDBED_CORRECTION_ZERO_MASS == int(CorrectionStatus::zero_mass) &&
+                  FLUIDBED_CORRECTION_FAILED == int(CorrectionStatus::failed),
+              "fluidbed_correction_status follows moments::CorrectionStatus");
+static_assert(FLUIDBED_MAX_NODES == fluidbed::bindings::max_nodes &&
+                  FLUIDBED_MAX_CLASSES == fluidbed::bindings::max_classes,
+              "the C interface's limits are the bindings'");
+
 template <class T>
 fluidbed_status drag_in(const fluidbed_closure* law, fluidbed_buoyancy convention, size_t n, const T* voidage,
                         const T* slip, const T* density, const T* viscosity, const T* diameter, T* beta, T* d_voidage,
@@ -158,12 +179,72 @@ extern "C" fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_supp
                                                    const double* moments, double* nodes, double* weights, int* sizes,
                                                    int* status, fluidbed_error* error) {
   return guarded(error, [&] {
-    if (support != FLUIDBED_SUPPORT_POSITIVE_HALF_LINE && support != FLUIDBED_SUPPORT_REAL_LINE)
-      throw InvalidArgument("fluidbed: unknown fluidbed_support " + std::to_string(static_cast<int>(support)));
-    fluidbed::bindings::invert_moments(node_count,
-                                       support == FLUIDBED_SUPPORT_REAL_LINE ? fluidbed::moments::Support::real_line
-                                                                             : fluidbed::moments::Support::positive_half_line,
-                                       n, moments, nodes, weights, sizes, status);
+    fluidbed::bindings::invert_moments(node_count, support_of(support), n, moments, nodes, weights, sizes, status);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_moment_realizability(fluidbed_support support, int moment_count, size_t n,
+                                                         const double* moments, int* status, int* realizable_moments,
+                                                         int* first_failing_index, double* failing_value,
+                                                         fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::moment_realizability(support_of(support), moment_count, n, moments, status, realizable_moments,
+                                             first_failing_index, failing_value);
+  });
+}
+
+extern "C" fluidbed_correction_options fluidbed_correction_default_options(void) {
+  const fluidbed::moments::CorrectionOptions<double> defaults;
+  return {defaults.protected_moments, defaults.max_iterations, defaults.degenerate_tolerance};
+}
+
+extern "C" fluidbed_status fluidbed_correct_moments(int moment_count, size_t n, const double* moments,
+                                                    const fluidbed_correction_options* options, double* corrected,
+                                                    int* status, int* realizable_moments, fluidbed_error* error) {
+  return guarded(error, [&] {
+    const fluidbed_correction_options o = options != nullptr ? *options : fluidbed_correction_default_options();
+    const fluidbed::moments::CorrectionOptions<double> cpp{o.protected_moments, o.max_iterations,
+                                                           o.degenerate_tolerance};
+    fluidbed::bindings::correct_moments(moment_count, n, moments, cpp, corrected, status, realizable_moments);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_mixture_radial_distribution(const fluidbed_closure* law, size_t n,
+                                                                size_t class_count, size_t i, size_t k,
+                                                                const double* fractions, const double* diameters,
+                                                                double* value, double* d_fractions,
+                                                                fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::mixture_radial_distribution(closure_of(law, "mixture_radial_distribution"), n, class_count, i,
+                                                    k, fractions, diameters, value, d_fractions);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_solid_solid_drag(const fluidbed_closure* law, size_t n, const double* phi_p,
+                                                     const double* phi_q, const double* density_p,
+                                                     const double* diameter_p, const double* density_q,
+                                                     const double* diameter_q, const double* restitution,
+                                                     const double* contact_rdf, const double* relative_speed,
+                                                     double* coefficient, double* d_phi_p, double* d_phi_q,
+                                                     double* d_contact_rdf, double* d_relative_speed,
+                                                     fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::solid_solid_drag(closure_of(law, "solid_solid_drag"), n, phi_p, phi_q, density_p, diameter_p,
+                                         density_q, diameter_q, restitution, contact_rdf, relative_speed, coefficient,
+                                         d_phi_p, d_phi_q, d_contact_rdf, d_relative_speed);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_gas_exchange_source(
+    const fluidbed_closure* law, const fluidbed_closure* radial, size_t n, const double* solid_fraction,
+    const double* granular_temperature, const double* slip, const double* beta, const double* gas_viscosity,
+    const double* diameter, const double* solid_density, const double* restitution, double* source,
+    double* d_solid_fraction, double* d_granular_temperature, double* d_beta, double* d_slip, fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::gas_exchange_source(closure_of(law, "gas_exchange_source"), radial, n, solid_fraction,
+                                            granular_temperature, slip, beta, gas_viscosity, diameter, solid_density,
+                                            restitution, source, d_solid_fraction, d_granular_temperature, d_beta,
+                                            d_slip);
   });
 }
 
