@@ -362,7 +362,10 @@ void gas_exchange_source(const NamedClosure& law, const NamedClosure* radial, st
   const auto& closure = family_closure<gas_exchange_sources>(law, "gas_exchange_source");
   require_arrays(n, "gas_exchange_source", phi, theta, slip, diameter, solid_density, restitution, source);
   const bool derivatives = d_phi != nullptr || d_theta != nullptr || d_beta != nullptr || d_slip != nullptr;
-  // Every cell's value and, if asked, its derivatives through `evaluate(material, cell)`.
+  const auto require_argument = [&](bool given, std::string_view what) {
+    if (!given) throw InvalidArgument("fluidbed: gas_exchange_source: " + law.name + " needs " + std::string(what));
+  };
+  // Every cell's value_of(material, cell) and, if asked, its derivatives_of(material, cell).
   const auto over_cells = [&](const auto& value_of, const auto& derivatives_of) {
     for_each_cell(n, [&](std::size_t c) {
       const kinetic_theory::GranularMaterial<T> material{diameter[c], solid_density[c], restitution[c]};
@@ -378,9 +381,8 @@ void gas_exchange_source(const NamedClosure& law, const NamedClosure* radial, st
   std::visit(
       [&]<class Source>(const Source& s) {
         if constexpr (std::is_same_v<Source, kinetic_theory::KochSanganiSource>) {
-          if (radial == nullptr)
-            throw InvalidArgument("fluidbed: gas_exchange_source: " + law.name + " needs a radial distribution");
-          require_arrays(n, "gas_exchange_source", gas_viscosity);
+          require_argument(radial != nullptr, "a radial distribution");
+          require_argument(n == 0 || gas_viscosity != nullptr, "the gas viscosity");
           std::visit(
               [&](const auto& g0) {
                 over_cells(
@@ -394,7 +396,7 @@ void gas_exchange_source(const NamedClosure& law, const NamedClosure* radial, st
               family_closure<radial_distributions>(*radial, "gas_exchange_source"));
         } else {
           static_assert(std::is_same_v<Source, kinetic_theory::DragFluctuationSource>, "a source of new arguments");
-          require_arrays(n, "gas_exchange_source", beta);
+          require_argument(n == 0 || beta != nullptr, "beta");
           over_cells([&](const auto& m, std::size_t c) { return s.checked(phi[c], theta[c], beta[c], slip[c], m); },
                      [&](const auto& m, std::size_t c) {
                        return s.checked_with_derivatives(phi[c], theta[c], beta[c], slip[c], m);

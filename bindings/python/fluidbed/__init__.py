@@ -28,7 +28,8 @@ from ._closure_docs import SECTIONS as _SECTIONS
 __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidArgument", "closure", "closure_names",
            "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
            "ElasticModulus", "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
-           "FrictionalStress", "CONVENTIONS", "invert", "INVERSION_STATUSES"]
+           "FrictionalStress", "MixtureRadialDistribution", "GasExchangeSource", "SolidSolidDrag", "CONVENTIONS",
+           "invert", "INVERSION_STATUSES", "realizability", "correct", "CORRECTION_STATUSES"]
 
 
 class Error(ValueError):
@@ -77,28 +78,38 @@ def closure_names():
 
 
 def _prepare(arrays):
-    """The arrays broadcast against each other, as contiguous flat arrays of one dtype, and the shape."""
-    arrays = [np.asarray(a) for a in arrays]
-    dtype = np.float32 if all(a.dtype == np.float32 for a in arrays) else np.float64
+    """The arrays broadcast against each other, as contiguous flat arrays of one dtype, and the shape;
+    a None (an argument the closure does not read) stays None."""
+    given = [np.asarray(a) for a in arrays if a is not None]
+    dtype = np.float32 if all(a.dtype == np.float32 for a in given) else np.float64
     try:
-        shape = np.broadcast_shapes(*(a.shape for a in arrays))
+        shape = np.broadcast_shapes(*(a.shape for a in given))
     except ValueError as e:
         raise InvalidArgument(f"fluidbed: the arrays do not broadcast against each other: {e}") from None
-    flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=dtype).reshape(-1) for a in arrays]
+    flat = [None if a is None else np.ascontiguousarray(np.broadcast_to(np.asarray(a), shape), dtype=dtype).reshape(-1)
+            for a in arrays]
     return dtype, shape, flat
 
 
-def _evaluate(kernel, closures, arrays, derivatives, *flags):
-    """kernel(*closures, *flat arrays, *flags, derivatives) in the arrays' dtype, reshaped; a failing
-    cell's index is given in the broadcast shape."""
-    dtype, shape, flat = _prepare(arrays)
-    module = _fluidbed.float32 if dtype == np.float32 else _fluidbed.float64
+def _module(dtype):
+    return _fluidbed.float32 if dtype == np.float32 else _fluidbed.float64
+
+
+def _call(function, shape, *arguments):
+    """function(*arguments); a failing cell's flat index is given in ``shape``."""
     try:
-        results = getattr(module, kernel)(*closures, *flags, *flat, bool(derivatives))
+        return function(*arguments)
     except Error as e:
         if e.index is not None:
             e.index = np.unravel_index(e.index, shape) if shape else ()
         raise
+
+
+def _evaluate(kernel, closures, arrays, derivatives, *flags):
+    """kernel(*closures, *flags, *flat arrays, derivatives) in the arrays' dtype, reshaped; a failing
+    cell's index is given in the broadcast shape."""
+    dtype, shape, flat = _prepare(arrays)
+    results = _call(getattr(_module(dtype), kernel), shape, *closures, *flags, *flat, bool(derivatives))
     return [None if r is None else r.reshape(shape) for r in results]
 
 
@@ -299,6 +310,123 @@ class FrictionalStress(Closure):
                                  derivatives))
 
 
+class MixtureRadialDistribution(Closure):
+    family = 7
+
+    def g(self, fractions, diameters, i, k, *, derivatives=False):
+        """g_ik, the contact value between a particle of class i and one of class k (0-based), of cells
+        whose classes' volume fractions φ_m and diameters d_m [m] lie along the last axis of
+        ``fractions`` and ``diameters`` (..., classes; 1 to 10 classes, broadcast against each other);
+        with ``derivatives`` a ``MixtureContact`` of g_ik (...) and ∂g_ik/∂φ_m (..., classes)."""
+        dtype, shape, (phi, d) = _prepare_classes(fractions, diameters)
+        value, slopes = _call(_module(dtype).mixture_radial_distribution, shape[:-1], self._closure, int(i), int(k),
+                              phi, d, bool(derivatives))
+        value = value.reshape(shape[:-1])
+        return MixtureContact(value, np.moveaxis(slopes, 0, -1).reshape(shape)) if derivatives else value
+
+
+def _prepare_classes(fractions, diameters):
+    """Per-class arrays (..., classes) broadcast together, as (classes, cells) contiguous arrays."""
+    dtype, shape, flat = _prepare([fractions, diameters])
+    if len(shape) == 0:
+        raise InvalidArgument("fluidbed: the classes must lie along the last axis of fractions and diameters")
+    return dtype, shape, [np.ascontiguousarray(a.reshape(-1, shape[-1]).T) for a in flat]
+
+
+MixtureContact = namedtuple("MixtureContact", "value d_fractions")
+SolidSolid = namedtuple("SolidSolid", "value d_phi_p d_phi_q d_contact_rdf d_relative_speed")
+Source = namedtuple("Source", "value d_solid_fraction d_granular_temperature d_beta d_slip")
+
+
+class SolidSolidDrag(Closure):
+    family = 17
+
+    def coefficient(self, phi_p, phi_q, density_p, diameter_p, density_q, diameter_q, restitution, contact_rdf,
+                    relative_speed, *, derivatives=False):
+        """K_pq [kg m⁻³ s⁻¹] between classes p and q per unit volume of suspension (the force on p is
+        K_pq (v_q − v_p)) at their volume fractions, their particles' densities [kg/m³] and diameters
+        [m], the restitution of their collisions, their contact value g_pq (``MixtureRadialDistribution.g``)
+        and their relative speed |v_p − v_q| [m/s]; with ``derivatives`` a ``SolidSolid`` with
+        ∂/∂φ_p, ∂/∂φ_q, ∂/∂g_pq and ∂/∂|v_p − v_q|."""
+        r = _evaluate("solid_solid_drag", [self._closure],
+                      [phi_p, phi_q, density_p, diameter_p, density_q, diameter_q, restitution, contact_rdf,
+                       relative_speed], derivatives)
+        return SolidSolid(*r) if derivatives else r[0]
+
+
+class GasExchangeSource(Closure):
+    family = 16
+
+    def source(self, solid_fraction, granular_temperature, slip, diameter, solid_density, restitution, *, beta=None,
+               gas_viscosity=None, radial=None, derivatives=False):
+        """The gas's production of granular energy [W m⁻³] (positive, on the right-hand side of the
+        granular energy balance) at φ, Θ [m² s⁻²], the slip speed |u_g − u_s| [m/s] and the material
+        (d [m], ρ_s [kg/m³], e). KochSanganiSource reads ``gas_viscosity`` [Pa s] and ``radial`` (a
+        RadialDistribution or its name, for g0(φ)); DragFluctuationSource reads ``beta``, the drag
+        coefficient [kg m⁻³ s⁻¹] of the host's momentum equation. With ``derivatives`` a ``Source``
+        with ∂/∂φ (through g0 as well), ∂/∂Θ, ∂/∂β and ∂/∂w."""
+        rdf = None
+        if radial is not None:
+            rdf = (radial if isinstance(radial, RadialDistribution) else RadialDistribution(radial))._closure
+        dtype, shape, flat = _prepare([solid_fraction, granular_temperature, slip, beta, gas_viscosity, diameter,
+                                       solid_density, restitution])
+        r = _call(_module(dtype).gas_exchange_source, shape, self._closure, rdf, *flat, bool(derivatives))
+        r = [None if a is None else a.reshape(shape) for a in r]
+        return Source(*r) if derivatives else r[0]
+
+
+#: A cell's outcome of ``correct`` (the C++ library's moments::CorrectionStatus).
+CORRECTION_STATUSES = ("unchanged", "mcgraw", "lognormal", "monodisperse", "zero_mass", "failed")
+
+Realizability = namedtuple("Realizability", "status realizable_moments first_failing_index failing_value")
+Correction = namedtuple("Correction", "moments status realizable_moments")
+
+
+def _moment_sets(moments, function, limit):
+    """(dtype, the cells' shape, the sets as a (count, cells) contiguous array) of ``moments`` (..., count)."""
+    m = np.asarray(moments)
+    if m.ndim < 1 or not 1 <= m.shape[-1] <= limit:
+        raise InvalidArgument(f"fluidbed: {function}: the last axis must hold 1 to {limit} moments, not shape "
+                              f"{m.shape}")
+    dtype = np.float32 if m.dtype == np.float32 else np.float64
+    return dtype, m.shape, np.ascontiguousarray(m.reshape(-1, m.shape[-1]).T, dtype=dtype)
+
+
+def _support(support):
+    if support not in ("positive_half_line", "real_line"):
+        raise InvalidArgument(f"fluidbed: support must be 'positive_half_line' or 'real_line', not {support!r}")
+    return support == "real_line"
+
+
+def realizability(moments, *, support="positive_half_line"):
+    """The realizability of moment sets ``moments`` (..., L), the last axis m_0 … m_(L−1) of one cell (L
+    from 1 to 16), on ``support``, by the signs of the recurrence's coefficients (no threshold): a
+    ``Realizability`` of the status (..., indices into INVERSION_STATUSES: ok when the whole set is
+    realizable, reduced when only a prefix is), the length R of the realizable prefix (the Gauss
+    rule has R // 2 nodes), the first failing coefficient's index (ζ_j on [0, ∞), β_k on the real
+    line; 0 where none fails) and its value (m_0 itself when m_0 <= 0). The C++ library's
+    moments::realizability, bit for bit; a cell's outcome is its status, never an exception."""
+    real_line = _support(support)
+    dtype, shape, sets = _moment_sets(moments, "realizability", 16)
+    r = _module(dtype).moment_realizability(real_line, sets)
+    return Realizability(*(a.reshape(shape[:-1]) for a in r))
+
+
+def correct(moments, *, protected_moments=None, max_iterations=None, degenerate_tolerance=None):
+    """Size moment sets ``moments`` (..., L; L from 1 to 16) made realizable where their transport left
+    moment space: McGraw's iterations toward a smooth ln m_k, the realizability test, and the
+    log-normal sharing m_0, m_1, m_2 as the fallback. Options (None: the library's default):
+    ``protected_moments`` (1: m_0 is never changed), ``max_iterations`` (20), ``degenerate_tolerance``
+    (the cube root of the dtype's epsilon: sets that close to the boundary are left unchanged).
+    Returns a ``Correction`` of the corrected sets (..., L), the statuses (..., indices into
+    CORRECTION_STATUSES) and the realizable prefix of each returned set. The C++ library's
+    moments::correct_moments, bit for bit."""
+    dtype, shape, sets = _moment_sets(moments, "correct", 16)
+    corrected, status, realizable = _module(dtype).correct_moments(sets, protected_moments, max_iterations,
+                                                                   degenerate_tolerance)
+    return Correction(corrected.T.reshape(shape), status.reshape(shape[:-1]), realizable.reshape(shape[:-1]))
+
+
 def invert(moments, *, support="positive_half_line"):
     """Gauss quadratures of moment sets: ``moments`` of shape (..., 2N), the last axis m_0 … m_(2N−1)
     of one cell (N from 1 to 8); ``support`` "positive_half_line" (sizes, masses) or "real_line"
@@ -306,26 +434,25 @@ def invert(moments, *, support="positive_half_line"):
     beyond a cell's node count, the node counts (...) and the statuses (..., indices into
     INVERSION_STATUSES): a cell that cannot be inverted has its status, never an exception. The
     C++ library's moments::invert_batched, bit for bit."""
-    if support not in ("positive_half_line", "real_line"):
-        raise InvalidArgument(f"fluidbed: support must be 'positive_half_line' or 'real_line', not {support!r}")
+    real_line = _support(support)
     m = np.asarray(moments)
     if m.ndim < 1 or m.shape[-1] % 2 or m.shape[-1] == 0:
         raise InvalidArgument(f"fluidbed: invert: the last axis must hold 2N moments, not shape {m.shape}")
     dtype = np.float32 if m.dtype == np.float32 else np.float64
     n = m.shape[-1] // 2
     cells = m.reshape(-1, 2 * n)
-    module = _fluidbed.float32 if dtype == np.float32 else _fluidbed.float64
-    nodes, weights, sizes, status = module.invert_moments(n, support == "real_line",
-                                                          np.ascontiguousarray(cells.T, dtype=dtype))
+    nodes, weights, sizes, status = _module(dtype).invert_moments(n, real_line,
+                                                                  np.ascontiguousarray(cells.T, dtype=dtype))
     shape = m.shape[:-1]
     return Quadrature(nodes.T.reshape(*shape, n), weights.T.reshape(*shape, n), sizes.reshape(shape),
                       status.reshape(shape))
 
 
-# The class of each family; the families without a class here are reachable for their metadata.
+# The class of each family.
 _CLASS_OF_FAMILY = {0: SphereDragCoefficient, 1: TerminalVelocity, 2: RichardsonZakiExponent, 3: MinimumFluidization,
-                    4: DragLaw, 5: ElasticModulus, 6: RadialDistribution, 13: FrictionalPressure, 14: FrictionalViscosity,
-                    15: FrictionalStress, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
+                    4: DragLaw, 5: ElasticModulus, 6: RadialDistribution, 7: MixtureRadialDistribution,
+                    13: FrictionalPressure, 14: FrictionalViscosity, 15: FrictionalStress, 16: GasExchangeSource,
+                    17: SolidSolidDrag, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
 _NAMESPACES = {0: "sphere_drag_coefficients", 1: "terminal_velocities", 2: "richardson_zaki_exponents",
                3: "minimum_fluidizations", 4: "drag_laws", 5: "elastic_moduli", 6: "radial_distributions",
                7: "mixture_radial_distributions", 8: "granular_pressures", 9: "shear_viscosities",
@@ -345,14 +472,12 @@ def _documentation(c):
 
 
 def _make_class(name, family):
-    base = _CLASS_OF_FAMILY.get(family, Closure)
+    base = _CLASS_OF_FAMILY[family]
 
     def __init__(self, **parameters):
         base.__init__(self, name, **parameters)
 
     cls = type(name, (base,), {"__init__": __init__, "__module__": f"fluidbed.{_NAMESPACES[family]}"})
-    if base is Closure:
-        cls.family = family
     cls.__doc__ = _documentation(_Probe(name))
     return cls
 

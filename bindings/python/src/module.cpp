@@ -148,8 +148,116 @@ py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments
   return py::make_tuple(nodes, weights, sizes, status);
 }
 
+// The moment functions' sets, moment-major (moment k of cell c at [k, c]): their count.
+template <class T>
+py::ssize_t moment_rows(const Array<T>& moments_in) {
+  if (moments_in.ndim() != 2)
+    guarded([] { throw fb::InvalidArgument("fluidbed: the moments must be (moment count, cells)"); });
+  return moments_in.shape(0);
+}
+
+template <class T>
+py::tuple moment_realizability(bool real_line, const Array<T>& moments_in) {
+  const py::ssize_t count = moment_rows(moments_in), n = moments_in.shape(1);
+  py::array_t<int> status(n), realizable(n), first_failing(n);
+  Array<T> failing(n);
+  int *st = status.mutable_data(), *r = realizable.mutable_data(), *f = first_failing.mutable_data();
+  T* v = failing.mutable_data();
+  guarded([&] {
+    fb::moment_realizability<T>(real_line ? fluidbed::moments::Support::real_line
+                                          : fluidbed::moments::Support::positive_half_line,
+                                static_cast<int>(count), static_cast<std::size_t>(n), moments_in.data(), st, r, f, v);
+  });
+  return py::make_tuple(status, realizable, first_failing, failing);
+}
+
+// The correction with the options given, each None for the library's default.
+template <class T>
+py::tuple correct_moments(const Array<T>& moments_in, std::optional<int> protected_moments,
+                          std::optional<int> max_iterations, std::optional<double> degenerate_tolerance) {
+  const py::ssize_t count = moment_rows(moments_in), n = moments_in.shape(1);
+  fluidbed::moments::CorrectionOptions<T> options;
+  if (protected_moments) options.protected_moments = *protected_moments;
+  if (max_iterations) options.max_iterations = *max_iterations;
+  if (degenerate_tolerance) options.degenerate_tolerance = static_cast<T>(*degenerate_tolerance);
+  Array<T> corrected({count, n});
+  py::array_t<int> status(n), realizable(n);
+  T* out = corrected.mutable_data();
+  int *st = status.mutable_data(), *r = realizable.mutable_data();
+  guarded([&] {
+    fb::correct_moments<T>(static_cast<int>(count), static_cast<std::size_t>(n), moments_in.data(), options, out, st,
+                           r);
+  });
+  return py::make_tuple(corrected, status, realizable);
+}
+
+// g_ik of cells whose classes are the rows of fractions and diameters (class m of cell c at [m, c]).
+template <class T>
+py::tuple mixture_radial_distribution(const fb::NamedClosure& law, std::size_t i, std::size_t k,
+                                      const Array<T>& fractions, const Array<T>& diameters, bool derivatives) {
+  if (fractions.ndim() != 2 || diameters.ndim() != 2 || fractions.shape(0) != diameters.shape(0) ||
+      fractions.shape(1) != diameters.shape(1))
+    guarded([] { throw fb::InvalidArgument("fluidbed: the fractions and diameters must be (classes, cells) alike"); });
+  const py::ssize_t classes = fractions.shape(0), n = fractions.shape(1);
+  Array<T> value(n);
+  auto slopes = derivatives ? std::optional<Array<T>>(Array<T>({classes, n})) : std::nullopt;
+  T* out = value.mutable_data();
+  guarded([&] {
+    fb::mixture_radial_distribution<T>(law, static_cast<std::size_t>(n), static_cast<std::size_t>(classes), i, k,
+                                       fractions.data(), diameters.data(), out, data_of(slopes));
+  });
+  return py::make_tuple(value, slopes);
+}
+
+template <class T>
+py::tuple solid_solid_drag(const fb::NamedClosure& law, const Array<T>& phi_p, const Array<T>& phi_q,
+                           const Array<T>& density_p, const Array<T>& diameter_p, const Array<T>& density_q,
+                           const Array<T>& diameter_q, const Array<T>& restitution, const Array<T>& contact_rdf,
+                           const Array<T>& relative_speed, bool derivatives) {
+  const py::ssize_t n = phi_p.size();
+  Array<T> value(n);
+  auto d_phi_p = output<T>(n, derivatives), d_phi_q = output<T>(n, derivatives), d_g = output<T>(n, derivatives),
+       d_speed = output<T>(n, derivatives);
+  T* out = value.mutable_data();
+  guarded([&] {
+    fb::solid_solid_drag<T>(law, static_cast<std::size_t>(n), phi_p.data(), phi_q.data(), density_p.data(),
+                            diameter_p.data(), density_q.data(), diameter_q.data(), restitution.data(),
+                            contact_rdf.data(), relative_speed.data(), out, data_of(d_phi_p), data_of(d_phi_q),
+                            data_of(d_g), data_of(d_speed));
+  });
+  return py::make_tuple(value, d_phi_p, d_phi_q, d_g, d_speed);
+}
+
+// A gas exchange source; beta, gas_viscosity and radial are None where the source does not read them.
+template <class T>
+py::tuple gas_exchange_source(const fb::NamedClosure& law, const fb::NamedClosure* radial, const Array<T>& phi,
+                              const Array<T>& theta, const Array<T>& slip, const std::optional<Array<T>>& beta,
+                              const std::optional<Array<T>>& gas_viscosity, const Array<T>& diameter,
+                              const Array<T>& density, const Array<T>& restitution, bool derivatives) {
+  const py::ssize_t n = phi.size();
+  Array<T> value(n);
+  auto d_phi = output<T>(n, derivatives), d_theta = output<T>(n, derivatives), d_beta = output<T>(n, derivatives),
+       d_slip = output<T>(n, derivatives);
+  T* out = value.mutable_data();
+  guarded([&] {
+    fb::gas_exchange_source<T>(law, radial, static_cast<std::size_t>(n), phi.data(), theta.data(), slip.data(),
+                               data_of(beta), data_of(gas_viscosity), diameter.data(), density.data(),
+                               restitution.data(), out, data_of(d_phi), data_of(d_theta), data_of(d_beta),
+                               data_of(d_slip));
+  });
+  return py::make_tuple(value, d_phi, d_theta, d_beta, d_slip);
+}
+
 template <class T>
 void define_kernels(py::module_& m) {
+  m.def("moment_realizability", &moment_realizability<T>);
+  m.def("correct_moments", &correct_moments<T>);
+  m.def("mixture_radial_distribution", &mixture_radial_distribution<T>);
+  m.def("solid_solid_drag", &solid_solid_drag<T>);
+  m.def("gas_exchange_source", &gas_exchange_source<T>, py::arg("law"), py::arg("radial").none(true),
+        py::arg("phi"), py::arg("theta"), py::arg("slip"), py::arg("beta").none(true),
+        py::arg("gas_viscosity").none(true), py::arg("diameter"), py::arg("density"), py::arg("restitution"),
+        py::arg("derivatives"));
   m.def("drag", &drag<T>);
   m.def("invert_moments", &invert_moments<T>);
   m.def("constitutive", &constitutive<T>);

@@ -1,10 +1,12 @@
 """The Python package against the C interface and the reference tables (pytest, ctest python.pytest).
 
-Bit for bit: every drag reference row (both conventions, derivatives) and every one-class
-kinetic-theory row through the package equals the C interface's result, called through ctypes on
-the same numbers (tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++
-library); the drag values also lie within 1e-12 of the mpmath table. Then shapes and broadcasting,
-float32, bad input, the parameters and help().
+Bit for bit: every drag reference row (both conventions, derivatives), every one-class
+kinetic-theory row, every mixture, solid-solid drag and gas exchange source row, the elastic
+states, and the moments reference sets (with corrupted copies) through the inversion, the
+realizability test and the correction equal the C interface's result, called through ctypes on the
+same numbers (tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++
+library); the values also lie within 1e-12 (drag) or 1e-13 of the mpmath tables. Then shapes and
+broadcasting, float32, bad input, the parameters and help().
 
 Environment: FLUIDBED_C_LIBRARY (the built libfluidbed_c), FLUIDBED_REFERENCE_DIR (tests/reference).
 """
@@ -265,3 +267,178 @@ def test_elastic_moduli_bit_for_bit_with_the_c_interface():
     assert at_state.value > 0 and np.isfinite(at_state.d_slip)
     with pytest.raises(fluidbed.InvalidArgument, match="defines no modulus off equilibrium"):
         fluidbed.elastic_moduli.JeanFanModulus().at_state(0.6, 0.01, 998.0, 1e-3, 2.5e-4)
+
+
+INTS = ctypes.POINTER(ctypes.c_int)
+MIXTURE_NAMES = {"lebowitz": "Lebowitz", "mansoori": "Mansoori", "modified_mansoori": "ModifiedMansoori"}
+
+
+def test_mixture_radial_distributions_and_solid_solid_drag_rows_bit_for_bit_with_the_c_interface():
+    compared = 0
+    for row in rows("ktgf_mixture_reference.csv"):
+        classes, i, k = int(row["classes"]), int(row["i"]), int(row["k"])
+        phi = np.array([float(row[f"phi{m + 1}"]) for m in range(classes)])
+        d = np.array([float(row[f"d{m + 1}"]) for m in range(classes)])
+        author, _, rdf_table_name = row["variant"].partition(":")
+        drag = row["function"] == "solid_solid_drag"
+        name = MIXTURE_NAMES[rdf_table_name if drag else author]
+        parameters = {"max_packing": float(row["max_packing"])} if name == "ModifiedMansoori" else {}
+        python = fluidbed.closure(name, **parameters).g(phi, d, i, k, derivatives=True)
+        handle = c_closure(name)
+        for key, value in parameters.items():
+            assert C.fluidbed_closure_set_parameter(handle, key.encode(), ctypes.c_double(value), None) == 0
+        g, slopes = np.empty(1), np.empty(classes)
+        assert C.fluidbed_mixture_radial_distribution(handle, ctypes.c_size_t(1), ctypes.c_size_t(classes),
+                                                      ctypes.c_size_t(i), ctypes.c_size_t(k), ptr(phi), ptr(d), ptr(g),
+                                                      ptr(slopes), None) == 0
+        assert same_bits(python.value, g[0]) and same_bits(python.d_fractions, slopes)
+        if drag:
+            friction = float(row["friction_coefficient"])
+            state = [np.array([float(x)]) for x in (phi[i], phi[k], row["rho_i"], d[i], row["rho_k"], d[k],
+                                                     row["restitution"], g[0], row["relative_speed"])]
+            law = fluidbed.solid_solid_drags.SyamlalSolidSolidDrag(friction_coefficient=friction)
+            python = law.coefficient(*state, derivatives=True)
+            handle = c_closure("SyamlalSolidSolidDrag")
+            assert C.fluidbed_closure_set_parameter(handle, b"friction_coefficient", ctypes.c_double(friction),
+                                                    None) == 0
+            out = [np.empty(1) for _ in range(5)]
+            assert C.fluidbed_solid_solid_drag(handle, ctypes.c_size_t(1), *(ptr(a) for a in state),
+                                               *(ptr(a) for a in out), None) == 0
+            for p, q in zip(python, out):
+                assert same_bits(p, q)
+        np.testing.assert_allclose(python.value, float(row["value"]), rtol=1e-13)
+        compared += 1
+    assert compared == 354
+    # Cells along any leading axes, the classes along the last, broadcast: g_01 of 2 x 3 cells.
+    lebowitz = fluidbed.mixture_radial_distributions.Lebowitz()
+    fractions = np.stack([np.full((2, 3), 0.1), np.linspace(0.05, 0.3, 6).reshape(2, 3)], axis=-1)
+    contact = lebowitz.g(fractions, [1e-4, 2e-4], 0, 1, derivatives=True)
+    assert contact.value.shape == (2, 3) and contact.d_fractions.shape == (2, 3, 2)
+    assert same_bits(contact.value[1, 2], lebowitz.g(fractions[1, 2], [1e-4, 2e-4], 0, 1))
+    assert lebowitz.g(fractions.astype(np.float32), np.float32([1e-4, 2e-4]), 0, 1).dtype == np.float32
+    fractions[1, 1, 0] = np.nan
+    with pytest.raises(fluidbed.DomainError, match=r"'fractions\[0\]' = nan") as caught:
+        lebowitz.g(fractions, [1e-4, 2e-4], 0, 1)
+    assert caught.value.index == (1, 1)
+    with pytest.raises(fluidbed.DomainError, match="'k' = 2 is out of domain"):
+        lebowitz.g([0.1, 0.2], [1e-4, 2e-4], 0, 2)
+    with pytest.raises(fluidbed.InvalidArgument, match="11 classes; 1 to 10 are offered"):
+        lebowitz.g(np.full(11, 0.01), np.full(11, 1e-4), 0, 1)
+    with pytest.raises(fluidbed.InvalidArgument, match="do not broadcast"):
+        lebowitz.g([0.1, 0.2], [1e-4, 2e-4, 3e-4], 0, 1)
+
+
+def test_gas_exchange_sources_bit_for_bit_with_the_c_interface():
+    compared = 0
+    for row in rows("ktgf_exchange_reference.csv"):
+        if row["function"] != "fluctuating_energy_source":
+            continue
+        x = {k: np.array([float(row[k])]) for k in ("solid_fraction", "granular_temperature", "slip", "beta",
+                                                    "gas_viscosity", "diameter", "particle_density", "restitution")}
+        common = [x[k] for k in ("solid_fraction", "granular_temperature", "slip")]
+        material = [x[k] for k in ("diameter", "particle_density", "restitution")]
+        author, _, rdf = row["variant"].partition(":")
+        out = [np.empty(1) for _ in range(5)]
+        if author == "koch_sangani":
+            radial = fluidbed.closure(RADIAL_NAMES[rdf], **({"max_packing": 0.63} if rdf == "ogawa" else {}))
+            python = fluidbed.gas_exchange_sources.KochSanganiSource().source(
+                *common, *material, gas_viscosity=x["gas_viscosity"], radial=radial, derivatives=True)
+            c_radial = c_closure(RADIAL_NAMES[rdf])
+            if rdf == "ogawa":
+                assert C.fluidbed_closure_set_parameter(c_radial, b"max_packing", ctypes.c_double(0.63), None) == 0
+            assert C.fluidbed_gas_exchange_source(c_closure("KochSanganiSource"), c_radial, ctypes.c_size_t(1),
+                                                  *(ptr(a) for a in common), None, ptr(x["gas_viscosity"]),
+                                                  *(ptr(a) for a in material), *(ptr(a) for a in out), None) == 0
+        else:
+            python = fluidbed.gas_exchange_sources.DragFluctuationSource().source(*common, *material, beta=x["beta"],
+                                                                                   derivatives=True)
+            assert C.fluidbed_gas_exchange_source(c_closure("DragFluctuationSource"), None, ctypes.c_size_t(1),
+                                                  *(ptr(a) for a in common), ptr(x["beta"]), None,
+                                                  *(ptr(a) for a in material), *(ptr(a) for a in out), None) == 0
+        for p, q in zip(python, out):
+            assert same_bits(p, q)
+        np.testing.assert_allclose(python.value, float(row["value"]), rtol=1e-13)
+        compared += 1
+    assert compared == 72
+    with pytest.raises(fluidbed.InvalidArgument, match="DragFluctuationSource needs beta"):
+        fluidbed.gas_exchange_sources.DragFluctuationSource().source(0.3, 1e-3, 0.5, 3e-4, 2500, 0.9)
+    with pytest.raises(fluidbed.InvalidArgument, match="KochSanganiSource needs a radial distribution"):
+        fluidbed.gas_exchange_sources.KochSanganiSource().source(0.3, 1e-3, 0.5, 3e-4, 2500, 0.9, gas_viscosity=1.8e-5)
+
+
+def corrupted_moment_sets():
+    """The reference sets and copies with one moment k >= 1 multiplied by 1.3 or 0.6."""
+    sets = []
+    for m in moment_sets().values():
+        sets.append(m)
+        for k in range(1, len(m)):
+            for factor in (1.3, 0.6):
+                sets.append(m.copy())
+                sets[-1][k] *= factor
+    return sets
+
+
+def test_realizability_and_correction_bit_for_bit_with_the_c_interface():
+    sets = corrupted_moment_sets()
+    seen = set()
+    for count in range(1, 17):
+        cells = np.array([m[:count] for m in sets if len(m) >= count])
+        n = len(cells)
+        moments = np.ascontiguousarray(cells.T)
+        for support, code in (("positive_half_line", 0), ("real_line", 1)):
+            python = fluidbed.realizability(cells, support=support)
+            status, realizable, failing_index = (np.empty(n, np.intc) for _ in range(3))
+            failing = np.empty(n)
+            assert C.fluidbed_moment_realizability(code, count, ctypes.c_size_t(n), ptr(moments),
+                                                   *(a.ctypes.data_as(INTS) for a in (status, realizable,
+                                                                                      failing_index)),
+                                                   ptr(failing), None) == 0
+            for p, q in zip(python, (status, realizable, failing_index)):
+                assert np.array_equal(p, q)
+            assert same_bits(python.failing_value, failing)
+        python = fluidbed.correct(cells)
+        corrected, status, realizable = np.empty((count, n)), np.empty(n, np.intc), np.empty(n, np.intc)
+        assert C.fluidbed_correct_moments(count, ctypes.c_size_t(n), ptr(moments), None, ptr(corrected),
+                                          status.ctypes.data_as(INTS), realizable.ctypes.data_as(INTS), None) == 0
+        assert same_bits(python.moments, corrected.T)
+        assert np.array_equal(python.status, status) and np.array_equal(python.realizable_moments, realizable)
+        seen.update(fluidbed.CORRECTION_STATUSES[s] for s in python.status)
+    assert {"unchanged", "mcgraw", "lognormal", "monodisperse"} <= seen
+    # Every set McGraw or the log-normal corrected is realizable; the failures are the sets without a
+    # size scale (m_1 <= 0: the real-line reference sets), returned as given.
+    corrupted = np.array([m[:8] for m in sets if len(m) >= 8])
+    fixed = fluidbed.correct(corrupted)
+    status = np.array(fluidbed.CORRECTION_STATUSES)[fixed.status]
+    corrected = (status == "mcgraw") | (status == "lognormal")
+    assert corrected.sum() > 100
+    assert np.all(fluidbed.realizability(fixed.moments[corrected]).realizable_moments == 8)
+    failed = status == "failed"
+    assert np.all(corrupted[failed, 1] <= 0) and same_bits(fixed.moments[failed], corrupted[failed])
+
+
+def test_realizability_and_correction_shapes_float32_and_errors():
+    k = np.arange(6)
+    legendre = 1 / (k + 1)
+    broken = legendre.copy()
+    broken[4] *= 0.6
+    report = fluidbed.realizability(np.stack([[legendre, broken]]))
+    assert report.status.shape == (1, 2)
+    assert [fluidbed.INVERSION_STATUSES[s] for s in report.status[0]] == ["ok", "reduced"]
+    assert report.realizable_moments[0, 1] < 6
+    fixed32 = fluidbed.correct(broken.astype(np.float32))
+    assert fixed32.moments.dtype == np.float32 and fixed32.moments.shape == (6,)
+    assert fluidbed.CORRECTION_STATUSES[fixed32.status] != "unchanged"
+    assert fluidbed.realizability(fixed32.moments).realizable_moments == 6
+    # McGraw never changes the protected moments.
+    kept = fluidbed.correct(broken, protected_moments=3, max_iterations=50)
+    assert same_bits(kept.moments[:3], broken[:3])
+    with pytest.raises(fluidbed.DomainError, match="'protected_moments' = 0 is out of domain"):
+        fluidbed.correct(broken, protected_moments=0)
+    with pytest.raises(fluidbed.DomainError, match="'degenerate_tolerance' = -1 is out of domain"):
+        fluidbed.correct(broken, degenerate_tolerance=-1)
+    with pytest.raises(fluidbed.InvalidArgument, match="1 to 16 moments"):
+        fluidbed.realizability(np.ones(17))
+    with pytest.raises(fluidbed.InvalidArgument, match="1 to 16 moments"):
+        fluidbed.correct(np.ones((3, 0)))
+    nan_cell = fluidbed.correct([1.0, np.nan, 1.0])
+    assert fluidbed.CORRECTION_STATUSES[nan_cell.status] == "failed"
