@@ -10,17 +10,28 @@ Dimensionless units: ρ_f = μ_f = d = 1, so Re = u_s and Ar = (ρ_p − ρ_f) g
 reproduces Richardson–Zaki exactly (ratio 1), which the script checks.
 
 Usage: voidage_ratio.py [OUT_DIR]   (writes voidage_ratio_python.png; needs NumPy and Matplotlib)
+
+The same as a Jupyter notebook: voidage_ratio.ipynb, made from this script's cells (the "# %%"
+lines) by notebook_from_script.py.
 """
+# %%
 import sys
 from pathlib import Path
 
 import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 
 import fluidbed
 
+in_notebook = "ipykernel" in sys.modules
+if not in_notebook:
+    matplotlib.use("Agg")                                     # a script writes the picture to a file
+import matplotlib.pyplot as plt
+
+# %% [markdown]
+# Re_t and Ar of each (ε_R&Z, Re) from Richardson–Zaki with Mazzei's exponent and Dallavalle's C_D.
+
+# %%
 reynolds = np.geomspace(1e-3, 1e5, 161)                       # Re = ρ_f u_s d/μ_f
 eps_rz = np.array([0.4, 0.6, 0.8])[:, None]                   # Richardson–Zaki voidages, one row each
 exponent = fluidbed.richardson_zaki_exponents.MazzeiExponent()
@@ -33,6 +44,10 @@ re_t = np.stack([np.interp(np.log(reynolds), np.log(re_t_grid * e ** exponent.ex
 archimedes = 0.75 * cd_re.cd_re(re_t) * re_t
 
 
+# %% [markdown]
+# The equilibrium voidage of a drag law: the bed's weight less buoyancy balances the drag.
+
+# %%
 def equilibrium_voidage(law):
     """The root in ε of β(ε, u_s/ε) u_s/ε − (1 − ε) Ar, for every (ε_RZ, Re), on a grid of ε."""
     eps = np.linspace(0.2, 0.9999, 4001)[:, None, None]
@@ -46,7 +61,11 @@ def equilibrium_voidage(law):
     return np.where(np.any(residual < 0, axis=0) & (k > 0), root, np.nan)
 
 
-out = Path(sys.argv[1] if len(sys.argv) > 1 else ".")
+# %% [markdown]
+# Four laws against Richardson–Zaki; Mazzei–Lettieri's reproduces it (checked to 1e-6).
+
+# %%
+out = Path(sys.argv[1] if len(sys.argv) > 1 and not in_notebook else ".")
 out.mkdir(parents=True, exist_ok=True)
 laws = ["Ergun", "WenYu1966", "DiFeliceDallavalle", "MazzeiLettieri"]
 figure, axes = plt.subplots(1, 3, figsize=(15, 4.5), sharey=True)
