@@ -1,0 +1,810 @@
+! The Fortran module (bindings/fortran/fluidbed.f90) beyond drag, against independent values,
+! ctest fortran.kinetic_theory_moments:
+!  - every radial distribution row and every one-class law row of tests/reference/ktgf_reference.csv
+!    (mpmath; the tables' names mapped as tests/kinetic_theory_table_names.hpp does), value within
+!    1e-13 and slopes within 1e-12 (relative, the C++ tests' scales), over arrays of cells;
+!  - every row of ktgf_mixture_reference.csv: the mixture radial distributions (value, ∂/∂φ_m) and
+!    Syamlal's solid-solid drag with g from the mixture distribution (derivatives by the chain
+!    rule), 1e-13 value and 1e-12 derivatives scaled as tests/test_kinetic_theory_mixture.cpp;
+!  - every gas exchange source row of ktgf_exchange_reference.csv (each source with only its own
+!    arguments), 1e-13 value and 1e-11 derivatives as tests/test_kinetic_theory_friction_exchange.cpp;
+!  - moments: the inversion recovers known atoms, a zero cell is zero mass, the realizability of
+!    sets with m_0 m_2 < m_1^2 and m_1 m_3 < m_2^2, the correction's monodisperse and log-normal
+!    sets (tests/test_moment_correction.cpp's numbers) and that they come back realizable;
+!  - the catalogue and the closures' metadata;
+!  - bad input: arrays of different sizes or shapes, NaN fractions (the status, the 1-based cell, the
+!    message naming the argument), an unknown name, closures of the wrong family, bad options.
+! Usage: fluidbed_fortran_kinetic_theory_moments PATH/TO/tests/reference
+program kinetic_theory_moments
+  use, intrinsic :: iso_c_binding, only: c_double, c_int
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use fluidbed
+  implicit none
+  integer, parameter :: field = 40
+  ! A CSV table: its header's names and its cells as text, cells(column, row).
+  type :: table
+    character(len=field), allocatable :: names(:)
+    character(len=field), allocatable :: cells(:, :)
+  end type
+  ! The tables' names and the library's (tests/kinetic_theory_table_names.hpp).
+  character(len=*), parameter :: radial_tables(8) = [character(len=24) :: 'carnahan_starling', 'percus_yevick', &
+    'lun_savage', 'sinclair_jackson', 'ogawa', 'gidaspow', 'ma_ahmadi', 'lathouwers_bellan']
+  character(len=*), parameter :: radial_names(8) = [character(len=32) :: 'CarnahanStarling', 'PercusYevick', &
+    'LunSavage', 'SinclairJackson', 'Ogawa', 'GidaspowRadialDistribution', 'MaAhmadi', 'LathouwersBellan']
+  character(len=*), parameter :: law_tables(11) = [character(len=48) :: 'granular_pressure:lun', &
+    'granular_pressure:syamlal_rogers_obrien', 'granular_pressure:ma_ahmadi', 'shear_viscosity:gidaspow', &
+    'shear_viscosity:syamlal', 'shear_viscosity:hrenya_sinclair', 'bulk_viscosity:lun', 'conductivity:gidaspow', &
+    'conductivity:syamlal', 'conductivity:hrenya_sinclair', 'dissipation:lun']
+  character(len=*), parameter :: law_names(11) = [character(len=32) :: 'LunPressure', &
+    'SyamlalRogersOBrienPressure', 'AhmadiMaPressure', 'GidaspowViscosity', 'SyamlalViscosity', &
+    'HrenyaSinclairViscosity', 'LunBulkViscosity', 'GidaspowConductivity', 'SyamlalConductivity', &
+    'HrenyaSinclairConductivity', 'LunDissipation']
+  character(len=*), parameter :: mixture_tables(3) = [character(len=24) :: 'lebowitz', 'mansoori', &
+    'modified_mansoori']
+  character(len=*), parameter :: mixture_names(3) = [character(len=24) :: 'Lebowitz', 'Mansoori', 'ModifiedMansoori']
+  real(c_double), parameter :: zero = 0
+  character(len=1024) :: directory
+  integer :: failures, radial_rows, law_rows, mixture_rows, solid_drag_rows, exchange_rows
+  real(c_double) :: nan
+
+  failures = 0
+  nan = ieee_value(zero, ieee_quiet_nan)
+  call get_command_argument(1, directory)
+  call check_one_class(trim(directory) // '/ktgf_reference.csv')
+  call check_mixture(trim(directory) // '/ktgf_mixture_reference.csv')
+  call check_exchange(trim(directory) // '/ktgf_exchange_reference.csv')
+  call check_moments()
+  call check_metadata()
+  call check_bad_input()
+  print '(a, 5(i0, a))', 'fortran: ', radial_rows, ' radial distribution rows, ', law_rows, &
+        ' one-class law rows, ', mixture_rows, ' mixture radial distribution rows, ', solid_drag_rows, &
+        ' solid-solid drag rows, ', exchange_rows, ' gas exchange rows'
+  call check(radial_rows == 191 .and. law_rows == 1092 .and. mixture_rows == 130 .and. solid_drag_rows == 224 .and. &
+             exchange_rows == 72, 'every row of the tables compared')
+  if (failures == 0) then
+    print '(a)', 'fortran: kinetic theory and moments: all checks passed'
+  else
+    print '(a, i0, a)', 'fortran: ', failures, ' checks FAILED'
+    error stop 1
+  end if
+
+contains
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (.not. ok) then
+      failures = failures + 1
+      if (failures <= 20) print '(2a)', 'FAILED: ', what
+    end if
+  end subroutine
+
+  ! |a − b|/|b|, 0 when a = b (±∞ included); NaN gives NaN.
+  elemental real(c_double) function relative_difference(a, b)
+    real(c_double), intent(in) :: a, b
+    relative_difference = 0
+    if (.not. abs(a - b) <= 0) relative_difference = abs(a - b) / max(abs(b), tiny(b))
+  end function
+
+  ! |a − b|/(|b| + scale), 0 when a = b.
+  elemental real(c_double) function scaled_error(a, b, scale)
+    real(c_double), intent(in) :: a, b, scale
+    scaled_error = 0
+    if (.not. abs(a - b) <= 0) scaled_error = abs(a - b) / (abs(b) + scale)
+  end function
+
+  ! ---- Tables -----------------------------------------------------------------------------------
+
+  subroutine split(line, fields, count)
+    character(len=*), intent(in) :: line
+    character(len=field), intent(out) :: fields(:)
+    integer, intent(out) :: count
+    integer :: start, comma
+    count = 0
+    start = 1
+    do
+      comma = index(line(start:), ',')
+      count = count + 1
+      if (comma == 0) then
+        fields(count) = line(start:len_trim(line))
+        return
+      end if
+      fields(count) = line(start:start + comma - 2)
+      start = start + comma
+    end do
+  end subroutine
+
+  function read_table(file) result(t)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=2048) :: line
+    character(len=field) :: fields(64)
+    integer :: unit, status, count, rows, columns
+    open(newunit=unit, file=file, status='old', action='read')
+    read(unit, '(a)') line
+    call split(line, fields, columns)
+    allocate(t%names(columns))
+    t%names = fields(1:columns)
+    rows = 0
+    do
+      read(unit, '(a)', iostat=status) line
+      if (status /= 0) exit
+      if (len_trim(line) > 0) rows = rows + 1
+    end do
+    allocate(t%cells(columns, rows))
+    rewind(unit)
+    read(unit, '(a)') line
+    rows = 0
+    do
+      read(unit, '(a)', iostat=status) line
+      if (status /= 0) exit
+      if (len_trim(line) == 0) cycle
+      rows = rows + 1
+      call split(line, fields, count)
+      if (count /= columns) error stop 'a row of another length'
+      t%cells(:, rows) = fields(1:columns)
+    end do
+    close(unit)
+  end function
+
+  integer function column(t, name)
+    type(table), intent(in) :: t
+    character(len=*), intent(in) :: name
+    do column = 1, size(t%names)
+      if (t%names(column) == name) return
+    end do
+    print '(2a)', 'no column ', name
+    error stop 1
+  end function
+
+  function text(t, row, name)
+    type(table), intent(in) :: t
+    integer, intent(in) :: row
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: text
+    text = trim(t%cells(column(t, name), row))
+  end function
+
+  real(c_double) function number(t, row, name)
+    type(table), intent(in) :: t
+    integer, intent(in) :: row
+    character(len=*), intent(in) :: name
+    read(t%cells(column(t, name), row), *) number
+  end function
+
+  ! The rows whose key is that of `row` and that are not done yet (then done).
+  function group_of(keys, row, done) result(rows)
+    character(len=*), intent(in) :: keys(:)
+    integer, intent(in) :: row
+    logical, intent(inout) :: done(:)
+    integer, allocatable :: rows(:)
+    logical :: same(size(keys))
+    integer :: r
+    same = keys == keys(row) .and. .not. done
+    rows = pack([(r, r = 1, size(keys))], same)
+    done = done .or. same
+  end function
+
+  function library_name(tables, names, name) result(library)
+    character(len=*), intent(in) :: tables(:), names(:), name
+    character(len=:), allocatable :: library
+    integer :: i
+    library = ''
+    do i = 1, size(tables)
+      if (tables(i) == name) library = trim(names(i))
+    end do
+  end function
+
+  logical function has_parameter(closure, name)
+    type(fluidbed_closure), intent(in) :: closure
+    character(len=*), intent(in) :: name
+    integer :: i
+    has_parameter = .false.
+    do i = 1, fluidbed_parameter_count(closure)
+      if (fluidbed_parameter_name(closure, i) == name) has_parameter = .true.
+    end do
+  end function
+
+  ! A closure by name, with its parameter `parameter` set where given.
+  function created(name, parameter, value) result(closure)
+    character(len=*), intent(in) :: name
+    character(len=*), intent(in), optional :: parameter
+    real(c_double), intent(in), optional :: value
+    type(fluidbed_closure) :: closure
+    character(len=:), allocatable :: message
+    integer :: status
+    status = fluidbed_create(name, closure, message)
+    call check(status == FLUIDBED_OK, 'create ' // name // ': ' // message)
+    if (present(parameter)) then
+      status = fluidbed_set_parameter(closure, parameter, value, message)
+      call check(status == FLUIDBED_OK, name // ' ' // parameter // ': ' // message)
+    end if
+  end function
+
+  ! The radial distribution of a table's name; Ogawa with φ_max = 0.63 (tests/reference/README.md).
+  function table_radial(name) result(radial)
+    character(len=*), intent(in) :: name
+    type(fluidbed_closure) :: radial
+    if (name == 'ogawa') then
+      radial = created('Ogawa', 'max_packing', 0.63_c_double)
+    else
+      radial = created(library_name(radial_tables, radial_names, name))
+    end if
+  end function
+
+  ! ---- One class: radial distributions and the laws of (φ, Θ, g0, material) ---------------------
+
+  subroutine check_one_class(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=3 * field), allocatable :: keys(:)
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    integer :: row
+    t = read_table(file)
+    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
+    do row = 1, size(keys)
+      keys(row) = text(t, row, 'function') // ' ' // text(t, row, 'variant') // ' ' // text(t, row, 'extra')
+    end do
+    done = .false.
+    radial_rows = 0
+    law_rows = 0
+    do row = 1, size(keys)
+      if (done(row)) cycle
+      rows = group_of(keys, row, done)
+      if (text(t, row, 'function') == 'radial_distribution') then
+        call check_radial_rows(t, rows)
+      else
+        call check_law_rows(t, rows)
+      end if
+    end do
+  end subroutine
+
+  subroutine check_radial_rows(t, rows)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    type(fluidbed_closure) :: law
+    real(c_double) :: phi(size(rows)), value(size(rows)), slope(size(rows))
+    character(len=:), allocatable :: message, name
+    integer :: status, c
+    name = library_name(radial_tables, radial_names, text(t, rows(1), 'variant'))
+    law = created(name)
+    if (has_parameter(law, 'max_packing')) then
+      status = fluidbed_set_parameter(law, 'max_packing', number(t, rows(1), 'extra'), message)
+      call check(status == FLUIDBED_OK, name // ' max_packing: ' // message)
+    end if
+    do c = 1, size(rows)
+      phi(c) = number(t, rows(c), 'solid_fraction')
+    end do
+    status = fluidbed_of_solid_fraction(law, phi, value, slope, message)
+    call check(status == FLUIDBED_OK, name // ': ' // message)
+    do c = 1, size(rows)
+      call check(relative_difference(value(c), number(t, rows(c), 'value')) < 1e-13_c_double, &
+                 name // ': g0 against the reference table')
+      call check(relative_difference(slope(c), number(t, rows(c), 'd_solid_fraction')) < 1e-12_c_double, &
+                 name // ': dg0/dphi against the reference table')
+    end do
+    radial_rows = radial_rows + size(rows)
+    call fluidbed_destroy(law)
+  end subroutine
+
+  subroutine check_law_rows(t, rows)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    type(fluidbed_closure) :: law, radial
+    real(c_double), dimension(size(rows)) :: phi, theta, d, rho, e, value, d_phi, d_theta
+    real(c_double) :: expected
+    character(len=:), allocatable :: message, variant, name
+    integer :: status, c, colon
+    variant = text(t, rows(1), 'variant')
+    colon = index(variant, ':')
+    ! The kinetic and collisional parts and the algebraic temperature are not closures.
+    name = library_name(law_tables, law_names, text(t, rows(1), 'function') // ':' // variant(1:colon - 1))
+    if (name == '') return
+    law = created(name)
+    ! The table's extra is the law's one parameter (Hrenya-Sinclair's L, Ahmadi-Ma's friction).
+    if (fluidbed_parameter_count(law) == 1) then
+      status = fluidbed_set_parameter(law, fluidbed_parameter_name(law, 1), number(t, rows(1), 'extra'), message)
+      call check(status == FLUIDBED_OK, name // ': ' // message)
+    end if
+    radial = table_radial(variant(colon + 1:))
+    do c = 1, size(rows)
+      phi(c) = number(t, rows(c), 'solid_fraction')
+      theta(c) = number(t, rows(c), 'granular_temperature')
+      d(c) = number(t, rows(c), 'diameter')
+      rho(c) = number(t, rows(c), 'particle_density')
+      e(c) = number(t, rows(c), 'restitution')
+    end do
+    status = fluidbed_constitutive(law, radial, phi, theta, d, rho, e, value, d_phi, d_theta, message)
+    call check(status == FLUIDBED_OK, name // ': ' // message)
+    do c = 1, size(rows)
+      expected = number(t, rows(c), 'value')
+      call check(relative_difference(value(c), expected) < 1e-13_c_double, name // ' ' // variant // ': value')
+      ! Derivative scales: value/φ and value/Θ.
+      call check(scaled_error(d_phi(c), number(t, rows(c), 'd_solid_fraction'), abs(expected) / phi(c)) &
+                 < 1e-12_c_double, name // ' ' // variant // ': d/dphi')
+      call check(scaled_error(d_theta(c), number(t, rows(c), 'd_granular_temperature'), abs(expected) / theta(c)) &
+                 < 1e-12_c_double, name // ' ' // variant // ': d/dTheta')
+    end do
+    law_rows = law_rows + size(rows)
+    call fluidbed_destroy(law)
+    call fluidbed_destroy(radial)
+  end subroutine
+
+  ! ---- Several classes ----------------------------------------------------------------------------
+
+  subroutine check_mixture(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=12 * field), allocatable :: keys(:)
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    integer :: row, j
+    character(len=*), parameter :: key_columns(8) = [character(len=24) :: 'function', 'variant', 'classes', 'i', &
+                                                     'k', 'max_packing', 'restitution', 'friction_coefficient']
+    t = read_table(file)
+    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
+    keys = ''
+    do row = 1, size(keys)
+      do j = 1, size(key_columns)
+        keys(row) = trim(keys(row)) // ' ' // text(t, row, trim(key_columns(j)))
+      end do
+    end do
+    done = .false.
+    mixture_rows = 0
+    solid_drag_rows = 0
+    do row = 1, size(keys)
+      if (.not. done(row)) then
+        rows = group_of(keys, row, done)
+        call check_mixture_rows(t, rows)
+      end if
+    end do
+  end subroutine
+
+  ! A group of rows of one law, class count and pair (i, k): the mixture distribution over the
+  ! cells (fractions(c, m), diameters(c, m)) and, for the drag rows, K_ik of its g_ik.
+  subroutine check_mixture_rows(t, rows)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    type(fluidbed_closure) :: rdf, drag
+    real(c_double), allocatable :: fractions(:, :), diameters(:, :), d_fractions(:, :)
+    real(c_double), dimension(size(rows)) :: g, rho_i, rho_k, e, w, k_ik, d_phi_p, d_phi_q, d_g, d_w
+    real(c_double) :: expected, derivative
+    character(len=:), allocatable :: message, what, variant, rdf_table, name
+    integer :: status, classes, i, k, c, m, colon, n
+    character(len=1) :: digit
+    n = size(rows)
+    what = text(t, rows(1), 'function')
+    variant = text(t, rows(1), 'variant')
+    colon = index(variant, ':')
+    rdf_table = variant(colon + 1:)
+    classes = nint(number(t, rows(1), 'classes'))
+    i = nint(number(t, rows(1), 'i')) + 1  ! 1-based, as the wrapper takes them
+    k = nint(number(t, rows(1), 'k')) + 1
+    allocate(fractions(n, classes), diameters(n, classes), d_fractions(n, classes))
+    do m = 1, classes
+      digit = achar(iachar('0') + m)
+      do c = 1, n
+        fractions(c, m) = number(t, rows(c), 'phi' // digit)
+        diameters(c, m) = number(t, rows(c), 'd' // digit)
+      end do
+    end do
+    name = library_name(mixture_tables, mixture_names, rdf_table)
+    rdf = created(name)
+    if (has_parameter(rdf, 'max_packing')) then
+      status = fluidbed_set_parameter(rdf, 'max_packing', number(t, rows(1), 'max_packing'), message)
+      call check(status == FLUIDBED_OK, name // ' max_packing: ' // message)
+    end if
+    status = fluidbed_mixture_radial_distribution(rdf, i, k, fractions, diameters, g, d_fractions, message)
+    call check(status == FLUIDBED_OK, name // ': ' // message)
+    if (what == 'radial_distribution') then
+      do c = 1, n
+        expected = number(t, rows(c), 'value')
+        call check(relative_difference(g(c), expected) < 1e-13_c_double, name // ': g_ik')
+        do m = 1, 3
+          derivative = 0
+          if (m <= classes) derivative = d_fractions(c, m)
+          call check(scaled_error(derivative, number(t, rows(c), 'd_phi' // achar(iachar('0') + m)), abs(expected)) &
+                     < 1e-12_c_double, name // ': dg_ik/dphi_m')
+        end do
+      end do
+      mixture_rows = mixture_rows + n
+    else
+      call check(what == 'solid_solid_drag' .and. variant(1:colon - 1) == 'syamlal', 'a Syamlal drag row')
+      drag = created('SyamlalSolidSolidDrag', 'friction_coefficient', number(t, rows(1), 'friction_coefficient'))
+      do c = 1, n
+        rho_i(c) = number(t, rows(c), 'rho_i')
+        rho_k(c) = number(t, rows(c), 'rho_k')
+        e(c) = number(t, rows(c), 'restitution')
+        w(c) = number(t, rows(c), 'relative_speed')
+      end do
+      status = fluidbed_solid_solid_drag(drag, fractions(:, i), fractions(:, k), rho_i, diameters(:, i), rho_k, &
+                                         diameters(:, k), e, g, w, k_ik, d_phi_p, d_phi_q, d_g, d_w, message)
+      call check(status == FLUIDBED_OK, 'SyamlalSolidSolidDrag: ' // message)
+      do c = 1, n
+        expected = number(t, rows(c), 'value')
+        call check(relative_difference(k_ik(c), expected) < 1e-13_c_double, 'SyamlalSolidSolidDrag ' // variant)
+        ! dK/dφ_m through φ_p (m = i), φ_q (m = k) and g_ik.
+        do m = 1, 3
+          derivative = 0
+          if (m <= classes) derivative = d_g(c) * d_fractions(c, m)
+          if (m == i) derivative = derivative + d_phi_p(c)
+          if (m == k) derivative = derivative + d_phi_q(c)
+          call check(scaled_error(derivative, number(t, rows(c), 'd_phi' // achar(iachar('0') + m)), abs(expected)) &
+                     < 1e-12_c_double, 'SyamlalSolidSolidDrag ' // variant // ': dK/dphi_m')
+        end do
+        call check(scaled_error(d_w(c), number(t, rows(c), 'd_relative_speed'), abs(expected)) < 1e-12_c_double, &
+                   'SyamlalSolidSolidDrag ' // variant // ': dK/dw')
+      end do
+      solid_drag_rows = solid_drag_rows + n
+      call fluidbed_destroy(drag)
+    end if
+    call fluidbed_destroy(rdf)
+  end subroutine
+
+  ! ---- Gas exchange sources -------------------------------------------------------------------------
+
+  subroutine check_exchange(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=field), allocatable :: keys(:)
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    integer :: row
+    t = read_table(file)
+    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
+    do row = 1, size(keys)
+      keys(row) = text(t, row, 'variant')
+    end do
+    done = [(text(t, row, 'function') /= 'fluctuating_energy_source', row = 1, size(keys))]
+    exchange_rows = 0
+    do row = 1, size(keys)
+      if (.not. done(row)) then
+        rows = group_of(keys, row, done)
+        call check_exchange_rows(t, rows)
+      end if
+    end do
+  end subroutine
+
+  subroutine check_exchange_rows(t, rows)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    type(fluidbed_closure) :: law, radial
+    real(c_double), dimension(size(rows)) :: phi, theta, slip, beta, mu, d, rho, e, source, d_phi, d_theta, d_beta, &
+                                             d_slip
+    real(c_double) :: expected
+    character(len=:), allocatable :: message, variant
+    integer :: status, c
+    variant = text(t, rows(1), 'variant')
+    do c = 1, size(rows)
+      phi(c) = number(t, rows(c), 'solid_fraction')
+      theta(c) = number(t, rows(c), 'granular_temperature')
+      slip(c) = number(t, rows(c), 'slip')
+      beta(c) = number(t, rows(c), 'beta')
+      mu(c) = number(t, rows(c), 'gas_viscosity')
+      d(c) = number(t, rows(c), 'diameter')
+      rho(c) = number(t, rows(c), 'particle_density')
+      e(c) = number(t, rows(c), 'restitution')
+    end do
+    ! Each source with only its own arguments.
+    if (variant == 'drag') then
+      law = created('DragFluctuationSource')
+      status = fluidbed_gas_exchange_source(law, phi, theta, slip, d, rho, e, source, d_phi, d_theta, d_beta, &
+                                            d_slip, beta=beta, message=message)
+    else
+      call check(index(variant, 'koch_sangani:') == 1, 'a Koch-Sangani row')
+      law = created('KochSanganiSource')
+      radial = table_radial(variant(len('koch_sangani:') + 1:))
+      status = fluidbed_gas_exchange_source(law, phi, theta, slip, d, rho, e, source, d_phi, d_theta, d_beta, &
+                                            d_slip, radial=radial, gas_viscosity=mu, message=message)
+      call fluidbed_destroy(radial)
+    end if
+    call check(status == FLUIDBED_OK, variant // ': ' // message)
+    do c = 1, size(rows)
+      expected = number(t, rows(c), 'value')
+      call check(relative_difference(source(c), expected) < 1e-13_c_double, variant // ': source')
+      call check(all(scaled_error([d_phi(c), d_theta(c), d_beta(c), d_slip(c)], &
+                                  [number(t, rows(c), 'd_solid_fraction'), &
+                                   number(t, rows(c), 'd_granular_temperature'), number(t, rows(c), 'd_beta'), &
+                                   number(t, rows(c), 'd_slip')], 1e-9_c_double * abs(expected)) < 1e-11_c_double), &
+                 variant // ': derivatives')
+    end do
+    exchange_rows = exchange_rows + size(rows)
+    call fluidbed_destroy(law)
+  end subroutine
+
+  ! ---- Moments ----------------------------------------------------------------------------------------
+
+  ! The moments m_0 … m_{count−1} of the atoms (weights, nodes).
+  pure function moments_of(weights, nodes, count) result(m)
+    real(c_double), intent(in) :: weights(:), nodes(:)
+    integer, intent(in) :: count
+    real(c_double) :: m(count)
+    integer :: j
+    do j = 1, count
+      m(j) = sum(weights * nodes**(j - 1))
+    end do
+  end function
+
+  subroutine check_moments()
+    real(c_double) :: m(4, 4), nodes(4, 2), weights(4, 2), corrected(4, 4), failing(4), again(3, 4)
+    integer(c_int) :: sizes(4), status(4), realizable(4), first_failing(4), corrected_realizable(4)
+    type(fluidbed_correction_options) :: options
+    character(len=:), allocatable :: message
+    integer :: code
+    ! Inversion: two cells of known atoms, an empty cell, and atoms on the real line.
+    m(1, :) = moments_of([0.3_c_double, 0.7_c_double], [1e-4_c_double, 2e-4_c_double], 4)
+    m(2, :) = 0
+    m(3, :) = moments_of([2.0_c_double, 0.5_c_double], [5e-5_c_double, 3e-4_c_double], 4)
+    m(4, :) = moments_of([0.4_c_double, 0.6_c_double], [-1.0_c_double, 2.0_c_double], 4)
+    code = fluidbed_invert_moments(2, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:3, :), nodes(1:3, :), &
+                                   weights(1:3, :), sizes(1:3), status(1:3), message)
+    call check(code == FLUIDBED_OK, 'invert: ' // message)
+    call check(all(status(1:3) == [FLUIDBED_INVERSION_OK, FLUIDBED_INVERSION_ZERO_MASS, FLUIDBED_INVERSION_OK]), &
+               'invert: the statuses')
+    call check(all(sizes(1:3) == [2, 0, 2]), 'invert: the node counts')
+    call check(all(relative_difference(nodes(1, :), [1e-4_c_double, 2e-4_c_double]) < 1e-12_c_double) .and. &
+               all(relative_difference(weights(1, :), [0.3_c_double, 0.7_c_double]) < 1e-12_c_double), &
+               'invert: the atoms 0.3, 0.7 at 1e-4, 2e-4 m')
+    call check(all(relative_difference(nodes(3, :), [5e-5_c_double, 3e-4_c_double]) < 1e-12_c_double) .and. &
+               all(relative_difference(weights(3, :), [2.0_c_double, 0.5_c_double]) < 1e-12_c_double), &
+               'invert: the atoms 2, 0.5 at 5e-5, 3e-4 m')
+    call check(all(same_bits(weights(2, :), zero)), 'invert: an empty cell has no weight')
+    code = fluidbed_invert_moments(2, FLUIDBED_SUPPORT_REAL_LINE, m(4:4, :), nodes(4:4, :), weights(4:4, :), &
+                                   sizes(4:4), status(4:4), message)
+    call check(code == FLUIDBED_OK .and. status(4) == FLUIDBED_INVERSION_OK, 'invert on the real line: ' // message)
+    call check(all(relative_difference(nodes(4, :), [-1.0_c_double, 2.0_c_double]) < 1e-12_c_double) .and. &
+               all(relative_difference(weights(4, :), [0.4_c_double, 0.6_c_double]) < 1e-12_c_double), &
+               'invert: the atoms 0.4, 0.6 at -1, 2 on the real line')
+
+    ! Realizability: m_0 m_2 < m_1^2 (ζ_2 = m_2/m_1 − m_1/m_0 = −0.5), m_1 m_3 < m_2^2, a realizable set.
+    m(1, :) = [1.0_c_double, 1.0_c_double, 0.5_c_double, 0.3_c_double]
+    m(2, :) = [1.0_c_double, 2.0_c_double, 5.0_c_double, 9.0_c_double]
+    m(3, :) = moments_of([0.3_c_double, 0.7_c_double], [1e-4_c_double, 2e-4_c_double], 4)
+    m(4, :) = [1.0_c_double, 2.0_c_double, 3.0_c_double, 8.0_c_double]
+    code = fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:3, :), status(1:3), &
+                                         realizable(1:3), first_failing(1:3), failing(1:3), message)
+    call check(code == FLUIDBED_OK, 'realizability: ' // message)
+    call check(all(status(1:3) == [FLUIDBED_INVERSION_REDUCED, FLUIDBED_INVERSION_REDUCED, FLUIDBED_INVERSION_OK]), &
+               'realizability: the statuses')
+    call check(all(realizable(1:3) == [2, 3, 4]), 'realizability: the realizable prefixes 2, 3, 4')
+    call check(all(first_failing(1:3) == [2, 3, 0]), 'realizability: the failing coefficients zeta_2, zeta_3')
+    call check(abs(failing(1) + 0.5_c_double) < 1e-14_c_double .and. failing(2) < 0 .and. &
+               same_bits(failing(3), zero), 'realizability: zeta_2 = -0.5')
+    ! Without the optional outputs, the same.
+    code = fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:3, :), sizes(1:3), &
+                                         corrected_realizable(1:3))
+    call check(code == FLUIDBED_OK .and. all(sizes(1:3) == status(1:3)) .and. &
+               all(corrected_realizable(1:3) == realizable(1:3)), 'realizability without the optional outputs')
+
+    ! Correction (tests/test_moment_correction.cpp): 1, 2, 3, 8 → the atom 1, 2, 4, 8; 1, 2, 5, 9
+    ! → the log-normal sharing m_0 … m_2 (m_3 = 8 (5/4)^3); a realizable set unchanged; zero mass.
+    m(1, :) = [1.0_c_double, 2.0_c_double, 3.0_c_double, 8.0_c_double]
+    m(2, :) = [1.0_c_double, 2.0_c_double, 5.0_c_double, 9.0_c_double]
+    m(4, :) = 0
+    code = fluidbed_correct_moments(m, corrected, status, corrected_realizable, message=message)
+    call check(code == FLUIDBED_OK, 'correct: ' // message)
+    call check(all(status == [FLUIDBED_CORRECTION_MONODISPERSE, FLUIDBED_CORRECTION_LOGNORMAL, &
+                              FLUIDBED_CORRECTION_UNCHANGED, FLUIDBED_CORRECTION_ZERO_MASS]), 'correct: the statuses')
+    call check(all(relative_difference(corrected(1, :), [1.0_c_double, 2.0_c_double, 4.0_c_double, 8.0_c_double]) &
+                   < 1e-15_c_double), 'correct: the monodisperse set')
+    call check(all(same_bits(corrected(2, 1:3), m(2, 1:3))) .and. &
+               relative_difference(corrected(2, 4), 8 * 1.25_c_double**3) < 1e-14_c_double, &
+               'correct: the log-normal set')
+    call check(all(same_bits(corrected(3, :), m(3, :))) .and. all(same_bits(corrected(4, :), zero)), &
+               'correct: unchanged sets')
+    call check(all(corrected_realizable(1:3) == [2, 4, 4]), 'correct: the realizable moments of the returned sets')
+    ! The corrected sets are realizable (the atom on the boundary: m_0, m_1 only).
+    code = fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, corrected(1:3, :), status(1:3), &
+                                         realizable(1:3))
+    call check(code == FLUIDBED_OK .and. all(status(2:3) == FLUIDBED_INVERSION_OK) .and. &
+               all(realizable(1:3) == corrected_realizable(1:3)), 'correct: the returned sets are realizable')
+    ! The defaults, given or not; options out of their domain.
+    options = fluidbed_correction_default_options()
+    call check(options%protected_moments == 1 .and. options%max_iterations == 20 .and. &
+               relative_difference(options%degenerate_tolerance, epsilon(zero)**(1 / 3.0_c_double)) &
+               < 1e-14_c_double, &
+               'the default correction options')
+    code = fluidbed_correct_moments(m(1:3, :), again, status(1:3), options=options, message=message)
+    call check(code == FLUIDBED_OK .and. all(same_bits(again(1:3, :), corrected(1:3, :))), &
+               'correct: the defaults given are the defaults')
+    options%protected_moments = 0
+    code = fluidbed_correct_moments(m(1:3, :), again, status(1:3), options=options, message=message)
+    call check(code == FLUIDBED_DOMAIN_ERROR, 'correct: protected_moments = 0 is a domain error')
+    print '(2a)', 'options: ', message
+  end subroutine
+
+  elemental logical function same_bits(a, b)
+    real(c_double), intent(in) :: a, b
+    same_bits = transfer(a, 0_8) == transfer(b, 0_8)
+  end function
+
+  ! ---- The catalogue and the closures' metadata ---------------------------------------------------
+
+  subroutine check_metadata()
+    type(fluidbed_closure) :: law, copy
+    character(len=:), allocatable :: quantity, message
+    real(c_double) :: low, high, value, pair(2), slope(2)
+    integer :: i, status
+    logical :: lebowitz, syamlal
+    lebowitz = .false.
+    syamlal = .false.
+    do i = 1, fluidbed_closure_count()
+      lebowitz = lebowitz .or. fluidbed_closure_name_at(i) == 'Lebowitz'
+      syamlal = syamlal .or. fluidbed_closure_name_at(i) == 'SyamlalSolidSolidDrag'
+    end do
+    call check(fluidbed_closure_count() > 50 .and. lebowitz .and. syamlal, 'the catalogue')
+    call check(fluidbed_closure_name_at(fluidbed_closure_count() + 1) == '' .and. fluidbed_closure_name_at(0) == '', &
+               'no name beyond the catalogue')
+    do i = 0, FLUIDBED_FAMILY_COUNT - 1
+      call check(len(fluidbed_family_what(i)) > 0 .and. len(fluidbed_family_convention(i)) > 0, 'a family''s texts')
+    end do
+    call check(fluidbed_family_what(FLUIDBED_FAMILY_COUNT) == '', 'no family beyond the last')
+    call check(fluidbed_status_name(FLUIDBED_DOMAIN_ERROR) == 'FLUIDBED_DOMAIN_ERROR', 'a status name')
+    law = created('ModifiedMansoori', 'max_packing', 0.6_c_double)
+    call check(fluidbed_family(law) == FLUIDBED_FAMILY_MIXTURE_RADIAL_DISTRIBUTION, 'the family of ModifiedMansoori')
+    call check(len(fluidbed_reference(law)) > 20, 'a reference: ' // fluidbed_reference(law))
+    call check(has_parameter(law, 'max_packing') .and. fluidbed_parameter_name(law, 0) == '' .and. &
+               fluidbed_parameter_name(law, fluidbed_parameter_count(law) + 1) == '', 'the parameters')
+    copy = fluidbed_copy(law)
+    status = fluidbed_get_parameter(copy, 'max_packing', value)
+    call check(status == FLUIDBED_OK .and. same_bits(value, 0.6_c_double) .and. &
+               fluidbed_name(copy) == 'ModifiedMansoori', 'a copy keeps the parameters')
+    call fluidbed_destroy(copy)
+    call fluidbed_destroy(law)
+    law = created('SyamlalSolidSolidDrag')
+    call check(fluidbed_family(law) == FLUIDBED_FAMILY_SOLID_SOLID_DRAG, 'the family of SyamlalSolidSolidDrag')
+    call check(fluidbed_richardson_zaki_argument(law) == '', 'no Richardson-Zaki argument for another family')
+    call fluidbed_destroy(law)
+    ! Single spheres and settling, closed forms: Schiller-Naumann C_D Re = 24 (1 + 0.15 Re^0.687)
+    ! below Re = 1000 and 0.44 Re above; its terminal Re_t → Ar/18 (Stokes); Rowe's
+    ! n = (4.7 + 0.41 Re_t^¾)/(1 + 0.175 Re_t^¾).
+    law = created('SchillerNaumannCoefficient')
+    status = fluidbed_validity(law, 1, quantity, low, high, message)
+    call check(fluidbed_validity_count(law) == 1 .and. status == FLUIDBED_OK .and. quantity == 'reynolds' .and. &
+               same_bits(low, zero) .and. same_bits(high, 2e5_c_double), &
+               'the validity range of SchillerNaumannCoefficient: ' // message)
+    status = fluidbed_validity(law, 2, quantity, low, high, message)
+    call check(status == FLUIDBED_INVALID_ARGUMENT .and. quantity == '', 'no validity range beyond the last')
+    status = fluidbed_sphere_drag_coefficient(law, [1.0_c_double, 2000.0_c_double], pair, slope, message)
+    call check(status == FLUIDBED_OK .and. &
+               all(relative_difference(pair, [27.6_c_double, 880.0_c_double]) < 1e-15_c_double) .and. &
+               relative_difference(slope(2), 0.44_c_double) < 1e-15_c_double, 'C_D Re of Schiller-Naumann')
+    call fluidbed_destroy(law)
+    law = created('SchillerNaumannTerminalVelocity')
+    status = fluidbed_reynolds_of_archimedes(law, [1e-3_c_double, 1e-2_c_double], pair, slope, message)
+    call check(status == FLUIDBED_OK .and. all(relative_difference(pair, [1e-3_c_double, 1e-2_c_double] / 18) &
+               < 1e-3_c_double) .and. all(relative_difference(slope, [1.0_c_double, 1.0_c_double] / 18) &
+               < 1e-2_c_double), 'Re_t of Schiller-Naumann, Stokes limit: ' // message)
+    call fluidbed_destroy(law)
+    law = created('RoweExponent')
+    call check(fluidbed_richardson_zaki_argument(law) == 'terminal_reynolds', 'Rowe''s argument')
+    status = fluidbed_richardson_zaki_exponent(law, [1.0_c_double, 0.0_c_double], pair, message=message)
+    call check(status == FLUIDBED_OK .and. relative_difference(pair(1), 5.11_c_double / 1.175_c_double) &
+               < 1e-15_c_double .and. same_bits(pair(2), 4.7_c_double), 'Rowe''s exponent: ' // message)
+    call fluidbed_destroy(law)
+  end subroutine
+
+  ! ---- Bad input --------------------------------------------------------------------------------------
+
+  subroutine check_bad_input()
+    type(fluidbed_closure) :: rdf, law, mixture, drag, source, wrong
+    real(c_double) :: phi(4), value(4), short(3), theta(4), d(4), rho(4), e(4), fractions(4, 2), diameters(4, 2), &
+                      g(4), d_short(3, 2), moments(4, 4), nodes(4, 2), weights(4, 2), moments_9(1, 18), &
+                      nodes_9(1, 9), weights_9(1, 9)
+    integer(c_int) :: sizes(4), status(4), short_status(3)
+    character(len=:), allocatable :: message
+    integer :: code, cell
+    phi = [0.1_c_double, 0.2_c_double, nan, 0.3_c_double]
+    theta = 0.01_c_double
+    d = 5e-4_c_double
+    rho = 2500
+    e = 0.9_c_double
+    rdf = created('CarnahanStarling')
+    law = created('LunPressure')
+    mixture = created('Lebowitz')
+    drag = created('SyamlalSolidSolidDrag')
+    source = created('KochSanganiSource')
+
+    ! Arrays of different sizes or shapes: the wrapper's own error, C not called.
+    code = fluidbed_of_solid_fraction(rdf, phi, short, message=message, cell=cell)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. cell == 0 .and. &
+               message == 'fluidbed: fluidbed_of_solid_fraction: the arrays differ in size from solid_fraction', &
+               'of_solid_fraction, arrays of different sizes: ' // message)
+    code = fluidbed_constitutive(law, rdf, phi, theta, d, rho, e, value, d_granular_temperature=short, &
+                                 message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. &
+               message == 'fluidbed: fluidbed_constitutive: the arrays differ in size from solid_fraction', &
+               'constitutive, a derivative of another size: ' // message)
+    fractions(:, 1) = [0.1_c_double, 0.2_c_double, 0.3_c_double, 0.2_c_double]
+    fractions(:, 2) = [0.2_c_double, nan, 0.1_c_double, 0.2_c_double]
+    diameters(:, 1) = 1e-4_c_double
+    diameters(:, 2) = 2e-4_c_double
+    code = fluidbed_mixture_radial_distribution(mixture, 1, 2, fractions, diameters(:, 1:1), g, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. message == &
+               'fluidbed: fluidbed_mixture_radial_distribution: the arrays differ in size from fractions', &
+               'mixture distribution, diameters of another class count: ' // message)
+    code = fluidbed_mixture_radial_distribution(mixture, 1, 2, fractions, diameters, g, d_short, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'mixture distribution, derivatives of another cell count')
+    code = fluidbed_solid_solid_drag(drag, phi, phi, rho, d, rho, d, e, phi, phi, value, d_relative_speed=short, &
+                                     message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. &
+               message == 'fluidbed: fluidbed_solid_solid_drag: the arrays differ in size from phi_p', &
+               'solid-solid drag, a derivative of another size: ' // message)
+    code = fluidbed_gas_exchange_source(source, phi, theta, phi, d, rho, e, value, radial=rdf, gas_viscosity=short, &
+                                        message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'gas exchange, a gas viscosity of another size')
+    moments = 1
+    code = fluidbed_invert_moments(2, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, moments(:, 1:3), nodes, weights, sizes, &
+                                   status, message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. &
+               message == 'fluidbed: fluidbed_invert_moments: the arrays differ in size from moments', &
+               'invert, 3 moments for 2 nodes: ' // message)
+    code = fluidbed_invert_moments(2, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, moments, nodes, weights, sizes, &
+                                   short_status, message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'invert, a status array of another size')
+    code = fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, moments, status, sizes, &
+                                         first_failing_index=short_status, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'realizability, an optional output of another size')
+    code = fluidbed_correct_moments(moments, nodes, status, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. &
+               message == 'fluidbed: fluidbed_correct_moments: the arrays differ in size from moments', &
+               'correct, a corrected array of another shape: ' // message)
+
+    ! NaN fractions: the checked API's domain error, the 1-based cell, the argument named.
+    code = fluidbed_of_solid_fraction(rdf, phi, value, message=message, cell=cell)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. cell == 3, 'a NaN solid fraction in cell 3')
+    call check(index(message, "fluidbed::kinetic_theory::CarnahanStarling: argument 'solid_fraction' = nan") == 1, &
+               'the checked message: ' // message)
+    print '(a, i0, 2a)', 'cell ', cell, ': ', message
+    code = fluidbed_constitutive(law, rdf, phi, theta, d, rho, e, value, message=message, cell=cell)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. cell == 3 .and. index(message, "'solid_fraction' = nan") > 0, &
+               'constitutive, a NaN solid fraction in cell 3: ' // message)
+    code = fluidbed_mixture_radial_distribution(mixture, 1, 2, fractions, diameters, g, message=message, cell=cell)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. cell == 2 .and. &
+               index(message, "fluidbed::kinetic_theory::Lebowitz: argument 'fractions[1]' = nan") == 1, &
+               'mixture distribution, a NaN fraction of class 2 in cell 2: ' // message)
+    print '(a, i0, 2a)', 'cell ', cell, ': ', message
+    code = fluidbed_mixture_radial_distribution(mixture, 3, 1, fractions(1:1, :), diameters(1:1, :), g(1:1), &
+                                                message=message)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. index(message, "'i'") > 0, 'class 3 of 2: ' // message)
+    code = fluidbed_mixture_radial_distribution(mixture, 0, 1, fractions(1:1, :), diameters(1:1, :), g(1:1), &
+                                                message=message)
+    call check(code == FLUIDBED_DOMAIN_ERROR, 'class 0 (1-based): ' // message)
+
+    ! An unknown name; closures of the wrong family.
+    code = fluidbed_create('NoSuchRadialDistribution', wrong, message)
+    call check(code == FLUIDBED_UNKNOWN_NAME .and. index(message, "unknown closure 'NoSuchRadialDistribution'") > 0, &
+               'an unknown name: ' // message)
+    phi(3) = 0.3_c_double
+    code = fluidbed_of_solid_fraction(law, phi, value, message=message, cell=cell)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'of_solid_fraction of a granular pressure: ' // message)
+    code = fluidbed_constitutive(law, law, phi, theta, d, rho, e, value, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'a granular pressure as the radial distribution: ' // message)
+    code = fluidbed_constitutive(rdf, rdf, phi, theta, d, rho, e, value, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'a radial distribution as the law: ' // message)
+    code = fluidbed_mixture_radial_distribution(rdf, 1, 1, fractions(1:1, :), diameters(1:1, :), g(1:1), &
+                                                message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'a one-class distribution as a mixture one: ' // message)
+    code = fluidbed_solid_solid_drag(mixture, phi, phi, rho, d, rho, d, e, phi, phi, value, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'a mixture distribution as a solid-solid drag: ' // message)
+    code = fluidbed_gas_exchange_source(source, phi, theta, phi, d, rho, e, value, radial=law, gas_viscosity=phi, &
+                                        message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'a granular pressure as the radial distribution of a source')
+    ! A source without its own arguments.
+    code = fluidbed_gas_exchange_source(source, phi, theta, phi, d, rho, e, value, gas_viscosity=phi, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'Koch-Sangani without a radial distribution: ' // message)
+    code = fluidbed_of_solid_fraction(rdf, phi(1:0), value(1:0), message=message)
+    call check(code == FLUIDBED_OK, 'no cells: ' // message)
+    moments_9 = 1
+    code = fluidbed_invert_moments(9, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, moments_9, nodes_9, weights_9, &
+                                   sizes(1:1), status(1:1), message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. index(message, '9 nodes') > 0, '9 nodes: ' // message)
+    call fluidbed_destroy(rdf)
+    call fluidbed_destroy(law)
+    call fluidbed_destroy(mixture)
+    call fluidbed_destroy(drag)
+    call fluidbed_destroy(source)
+  end subroutine
+
+end program
