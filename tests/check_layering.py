@@ -7,7 +7,8 @@ Each folder (and each umbrella header at the top) has a layer; a header may incl
 its own folder and of lower layers only, and may call `<namespace>::detail::` only for its own
 family's namespace or core's (`fluidbed::detail`, `fluidbed::numbers::detail`). Every `throw` of the library, and
 `#include <stdexcept>`, is in core/errors.hpp, the host-only header of the checked entry points
-(device code, compiled by tests/cuda/, never reaches it). Fails (exit 1, listing every
+(device code, compiled by tests/cuda/, never reaches it). No header calls std::isnormal, which
+nvcc compiles to false in device code. Fails (exit 1, listing every
 violation) otherwise, and when a folder exists that LAYERS does not place. Python 3 standard
 library only.
 """
@@ -32,6 +33,9 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 DETAIL_CALL = re.compile(r"\b(\w+)::detail::")
 THROWING = re.compile(r"\bthrow\b|#\s*include\s*<stdexcept>")
 THROWING_HEADER = Path("core") / "errors.hpp"
+# Standard functions nvcc compiles wrongly in device code without a diagnostic: std::isnormal is
+# constant false there (moments/recurrence.hpp has detail::is_normal instead).
+DEVICE_UNSAFE = re.compile(r"\bisnormal\b")
 
 
 def unit_of(path, include_dir):
@@ -64,6 +68,9 @@ def main():
         if header.relative_to(include_dir) != THROWING_HEADER and THROWING.search(code):
             problems.append(f"{header.relative_to(root)} throws or includes <stdexcept>: "
                             f"only {THROWING_HEADER.as_posix()} may (the checked paths call its helpers)")
+        if DEVICE_UNSAFE.search(code):
+            problems.append(f"{header.relative_to(root)} uses isnormal, which nvcc makes false in device code: "
+                            "use moments::detail::is_normal")
         if unit != "umbrellas":
             for namespace in set(DETAIL_CALL.findall(code)):
                 if namespace not in ("fluidbed", "numbers", unit):  # fluidbed::numbers is core's too
@@ -75,7 +82,7 @@ def main():
             print("  " + problem)
         return 1
     print(f"layering OK: {len(LAYERS)} layers, no include of a higher or equal layer, no cross-family detail:: call, "
-          f"no throw outside {THROWING_HEADER.as_posix()}")
+          f"no throw outside {THROWING_HEADER.as_posix()}, no isnormal")
     return 0
 
 

@@ -100,7 +100,7 @@ void check_archimedes_correlations(std::initializer_list<double> grid) {
 
 // A user's own Richardson–Zaki exponent: a constant n.
 struct ConstantExponent : settling::RichardsonZakiExponent<ConstantExponent> {
-  static constexpr std::string_view argument = "terminal_reynolds";
+  static constexpr const char* argument = "terminal_reynolds";
   constexpr std::string_view name() const { return "ConstantExponent"; }
   constexpr std::string_view reference() const { return "a test"; }
   constexpr Validity<0> validity() const { return {}; }

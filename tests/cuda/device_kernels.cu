@@ -1,7 +1,8 @@
 // The per-cell entry points compiled as CUDA device code: kernels evaluate every
 // monodisperse drag law (value and ∂β/∂ε, ∂β/∂w), every closure of every registry of the
-// library (fluidbed::Registries: hot path and with_derivatives), invert three-node moment sets,
-// evaluate the kinetic-theory set with its derivatives, and the elastic force with its drag.
+// library (fluidbed::Registries: hot path and with_derivatives), invert moment sets to three and
+// four nodes, evaluate the kinetic-theory set with its derivatives, the elastic force with its
+// drag, and the functions that are not closures (gas damping, buoyancy, virtual mass).
 // The host evaluates the same cells and, where a GPU is present, compares; where none is, the
 // program reports a skip. nvcc reports a host function reached from device code, so that every
 // warning being an error (run_device_compile_test.sh) also shows that no closure's device path
@@ -151,17 +152,25 @@ FLUIDBED_HOST_DEVICE void registry_cell(int i, double* out) {
   });
 }
 
-// Moments of a log-normal size distribution, mean 100–200 µm, spread 0.3.
+// Moments of a log-normal size distribution, mean 100–200 µm, spread 0.3, inverted to three
+// nodes (the closed-form solver) and to four (the QL): nodes, weights and whether ok.
+constexpr int quadrature_outputs = 2 * 3 + 1 + 2 * 4 + 1;
+
+template <int N>
+FLUIDBED_HOST_DEVICE double* store_quadrature(const moments::InversionResult<double, N>& r, double* out) {
+  for (int k = 0; k < N; ++k) *out++ = r.quadrature.nodes[k];
+  for (int k = 0; k < N; ++k) *out++ = r.quadrature.weights[k];
+  *out++ = double(r.status == moments::InversionStatus::ok);
+  return out;
+}
+
 FLUIDBED_HOST_DEVICE void quadrature_cell(int i, double* out) {
   const double mean = 100e-6 * (1 + double(i) / cells), spread = 0.3;
-  std::array<double, 6> m{};
-  for (int n = 0; n < 6; ++n) m[n] = std::exp(n * std::log(mean) + 0.5 * n * n * spread * spread);
-  const auto r = moments::invert<3>(m);
-  for (int k = 0; k < 3; ++k) {
-    out[i * 7 + k] = r.quadrature.nodes[k];
-    out[i * 7 + 3 + k] = r.quadrature.weights[k];
-  }
-  out[i * 7 + 6] = double(r.status == moments::InversionStatus::ok);
+  std::array<double, 8> m{};
+  for (int n = 0; n < 8; ++n) m[n] = std::exp(n * std::log(mean) + 0.5 * n * n * spread * spread);
+  double* slot = out + i * quadrature_outputs;
+  slot = store_quadrature(moments::invert<3>(std::array<double, 6>{m[0], m[1], m[2], m[3], m[4], m[5]}), slot);
+  store_quadrature(moments::invert<4>(m), slot);
 }
 
 FLUIDBED_HOST_DEVICE void kinetic_theory_cell(int i, double* out) {
@@ -185,6 +194,16 @@ FLUIDBED_HOST_DEVICE void elastic_cell(int i, double* out) {
   out[i * 3 + 2] = settling::MazzeiExponent{}(1.0 + 10.0 * i);
 }
 
+// The functions that are not closures of a registry: the gas's damping of the fluctuations, the
+// buoyancy and the virtual mass force (their checks pass names to the hot path too).
+FLUIDBED_HOST_DEVICE void free_function_cell(int i, double* out) {
+  const double u = (i + 0.5) / cells;
+  const Vector3<double> gravity{0.0, 0.0, -9.81}, fluid_acceleration{0.1, 0.0, u}, particle_acceleration{0.0, u, 0.0};
+  out[i * 3 + 0] = kinetic_theory::gas_damping(1e3 * u, 1e-3 + u);
+  out[i * 3 + 1] = interaction::classical_buoyancy(0.5 * u, 1.2, gravity)[2];
+  out[i * 3 + 2] = interaction::virtual_mass_force(0.5 * u, 1.2, fluid_acceleration, particle_acceleration)[2];
+}
+
 template <void (*Cell)(int, double*)>
 __global__ void per_cell_kernel(double* out) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -198,19 +217,31 @@ double device_host_difference(int per_cell, const char* what) {
   std::vector<double> host(size), device(size);
   for (int i = 0; i < cells; ++i) Cell(i, host.data());
   double* buffer = nullptr;
-  if (cudaMalloc(&buffer, size * sizeof(double)) != cudaSuccess) return INFINITY;
-  per_cell_kernel<Cell><<<(cells + 127) / 128, 128>>>(buffer);
-  const bool ran = cudaGetLastError() == cudaSuccess &&
-                   cudaMemcpy(device.data(), buffer, size * sizeof(double), cudaMemcpyDeviceToHost) == cudaSuccess;
+  // NaN everywhere first (all bits set), so that a value the kernel did not write shows.
+  cudaError_t status = cudaMalloc(&buffer, size * sizeof(double));
+  if (status == cudaSuccess) status = cudaMemset(buffer, 0xff, size * sizeof(double));
+  if (status == cudaSuccess) {
+    per_cell_kernel<Cell><<<(cells + 127) / 128, 128>>>(buffer);
+    status = cudaGetLastError();
+  }
+  if (status == cudaSuccess) status = cudaDeviceSynchronize();
+  if (status == cudaSuccess)
+    status = cudaMemcpy(device.data(), buffer, size * sizeof(double), cudaMemcpyDeviceToHost);
   cudaFree(buffer);
-  if (!ran) return INFINITY;
+  if (status != cudaSuccess) {
+    std::printf("%-15s the kernel did not run: %s\n", what, cudaGetErrorString(status));
+    return INFINITY;
+  }
   double worst = 0;
+  std::size_t worst_at = 0;
   for (std::size_t j = 0; j < size; ++j) {
     const double scale = std::fmax(std::fabs(host[j]), 1e-300);
-    if (!std::isfinite(device[j])) return INFINITY;
-    worst = std::fmax(worst, std::fabs(device[j] - host[j]) / scale);
+    const double difference = std::isfinite(device[j]) ? std::fabs(device[j] - host[j]) / scale : INFINITY;
+    if (!(difference <= worst)) worst = difference, worst_at = j;
   }
-  std::printf("%-15s %6zu values, largest relative device-host difference %.2e\n", what, size, worst);
+  std::printf("%-15s %6zu values, largest relative device-host difference %.2e (value %zu: device %.17g, host "
+              "%.17g)\n",
+              what, size, worst, worst_at, device[worst_at], host[worst_at]);
   return worst;
 }
 
@@ -233,9 +264,10 @@ int main() {
   constexpr double tolerance = 1e-10;
   const double worst[] = {device_host_difference<drag_cell>(laws * outputs_per_law, "drag"),
                           device_host_difference<registry_cell>(registered_closures, "registries"),
-                          device_host_difference<quadrature_cell>(7, "inversion"),
+                          device_host_difference<quadrature_cell>(quadrature_outputs, "inversion"),
                           device_host_difference<kinetic_theory_cell>(3, "kinetic theory"),
-                          device_host_difference<elastic_cell>(3, "elastic force")};
+                          device_host_difference<elastic_cell>(3, "elastic force"),
+                          device_host_difference<free_function_cell>(3, "free functions")};
   for (double w : worst)
     if (!(w <= tolerance)) {
       std::printf("FAILED: device and host differ by more than %.0e\n", tolerance);

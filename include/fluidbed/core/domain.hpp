@@ -80,12 +80,17 @@ FLUIDBED_HOST_DEVICE constexpr Interval<T> closed_open(const T& lower, const T& 
 // replaces the interval's own wording in the checked path's message (for a bound that is
 // another argument, e.g. "must be finite and > fluid.density: heavier-than-fluid particles
 // only").
+// The texts are C strings, not std::string_view: the hot path builds these lists for its
+// debug-build assertions in device code too, and nvcc compiles std::string_view's constructor
+// from a C string (std::char_traits::length, __builtin_strlen) in device code to undefined
+// behaviour without a diagnostic, which empties the whole kernel (seen on an H100: every kernel
+// of tests/cuda wrote nothing in a debug build).
 template <class T>
 struct Argument {
-  std::string_view name;
+  const char* name;
   T value;
   Interval<T> domain;
-  std::string_view requirement{};
+  const char* requirement = nullptr;
 };
 
 template <class T, std::size_t N>

@@ -86,14 +86,14 @@ void require_within(std::string_view function, const Arguments<T, N>& list) {
   for (const Argument<T>& argument : list)
     if (!argument.domain.contains(argument.value))
       detail::throw_domain_error(function, argument.name, argument.value,
-                                 argument.requirement.empty() ? detail::requirement_text(argument.domain)
-                                                              : std::string(argument.requirement));
+                                 argument.requirement == nullptr ? detail::requirement_text(argument.domain)
+                                                                : std::string(argument.requirement));
 }
 
 // Throws unless x lies in `domain` (one argument).
 template <class T>
 void require_in(std::string_view function, std::string_view argument, const T& x, const Interval<T>& domain) {
-  require_within(function, arguments(Argument<T>{argument, x, domain}));
+  if (!domain.contains(x)) detail::throw_domain_error(function, argument, x, detail::requirement_text(domain));
 }
 
 // For the checked entry points, after the evaluation: throws std::domain_error unless the
@@ -135,9 +135,12 @@ inline constexpr Checked checked{};
 template <class Policy>
 concept ErrorPolicy = std::same_as<Policy, Unchecked> || std::same_as<Policy, Checked>;
 
-// The domain check of an entry point under `Policy`.
-template <ErrorPolicy Policy, class T, std::size_t N>
-constexpr void check_domain(Policy, std::string_view function, const Arguments<T, N>& list) {
+// The domain check of an entry point under `Policy`. The names (here and in check_result) are
+// taken as given (a C string, a string_view) and read only on the checked path: the hot path
+// runs in device code, where nvcc compiles a std::string_view made from a C string to undefined
+// behaviour (core/domain.hpp, Argument).
+template <ErrorPolicy Policy, class Name, class T, std::size_t N>
+constexpr void check_domain(Policy, const Name& function, const Arguments<T, N>& list) {
   if constexpr (std::same_as<Policy, Checked>)
     require_within(function, list);
   else
@@ -146,8 +149,8 @@ constexpr void check_domain(Policy, std::string_view function, const Arguments<T
 
 // The result check of an entry point under `Policy`: the checked path throws unless the
 // result is finite (require_finite_result); the hot path returns it as it is.
-template <ErrorPolicy Policy, class T, class DescribeArguments>
-constexpr void check_result(Policy, std::string_view function, std::string_view result, const T& value,
+template <ErrorPolicy Policy, class Name, class Result, class T, class DescribeArguments>
+constexpr void check_result(Policy, const Name& function, const Result& result, const T& value,
                             const DescribeArguments& describe_arguments) {
   if constexpr (std::same_as<Policy, Checked>) require_finite_result(function, result, value, describe_arguments);
 }

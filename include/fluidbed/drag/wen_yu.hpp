@@ -36,7 +36,9 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
  public:
   static constexpr Buoyancy native_buoyancy = Buoyancy::classical;
 
-  constexpr ConstantExponentDrag(double exponent, std::string_view name, std::string_view reference)
+  // name and reference: C strings that outlive the law (literals), not std::string_views, so that
+  // the laws can be made in device code (core/domain.hpp, Argument, says why).
+  constexpr ConstantExponentDrag(double exponent, const char* name, const char* reference)
       : exponent_(exponent), name_(name), reference_(reference) {}
 
   static constexpr ConstantExponentDrag lewis() {
@@ -83,8 +85,8 @@ class ConstantExponentDrag : public DragLaw<ConstantExponentDrag> {
 
  private:
   double exponent_;
-  std::string_view name_;
-  std::string_view reference_;
+  const char* name_;
+  const char* reference_;
 };
 
 }  // namespace fluidbed::drag

@@ -188,7 +188,7 @@ namespace detail {
 
 // The domain of the wave quantities with a wavenumber or a wave velocity (`name`) > 0.
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr Arguments<T, 4> wave_domain(const WaveSpeeds<T>& w, std::string_view name,
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 4> wave_domain(const WaveSpeeds<T>& w, const char* name,
                                                            const T& value) {
   return arguments(Argument<T>{"waves.kinematic", w.kinematic, domains::non_negative<T>()},
                    Argument<T>{"waves.dynamic", w.dynamic, domains::non_negative<T>()},

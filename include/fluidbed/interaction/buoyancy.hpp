@@ -36,7 +36,7 @@ FLUIDBED_HOST_DEVICE constexpr Argument<T> solid_fraction_argument(const T& soli
 }
 // A density or a viscosity.
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr Argument<T> property_argument(std::string_view name, const T& value) {
+FLUIDBED_HOST_DEVICE constexpr Argument<T> property_argument(const char* name, const T& value) {
   return {name, value, domains::positive<T>()};
 }
 

@@ -17,7 +17,7 @@ namespace fluidbed::interaction {
 // A vector argument: every component must be finite.
 template <class T>
 struct FiniteVector {
-  std::string_view name;
+  const char* name;  // a C string, as Argument's name (core/domain.hpp)
   const Vector3<T>& value;
 
   FLUIDBED_HOST_DEVICE constexpr bool holds() const {
@@ -29,9 +29,9 @@ struct FiniteVector {
 // The domain check of a force under `Policy` (core/errors.hpp), the vectors first (a length
 // computed from a vector is then finite), then the scalars: what fluidbed::check_domain is for
 // scalar arguments. Shared by the forces of interaction/ and elastic/.
-template <ErrorPolicy Policy, class T, std::size_t N, class... Vectors>
-constexpr void check_force_domain(Policy policy, std::string_view function, const Arguments<T, N>& scalars,
-                            const Vectors&... vectors) {
+template <ErrorPolicy Policy, class Name, class T, std::size_t N, class... Vectors>
+constexpr void check_force_domain(Policy policy, const Name& function, const Arguments<T, N>& scalars,
+                                  const Vectors&... vectors) {
   if constexpr (std::same_as<Policy, Checked>)
     (require_finite_elements(function, vectors.name, vectors.value), ...);
   else

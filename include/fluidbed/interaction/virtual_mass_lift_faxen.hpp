@@ -25,7 +25,7 @@ namespace detail {
 
 // The arguments every force of this header has: φ, a fluid property and the coefficient.
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr Arguments<T, 3> force_domain(const T& solid_fraction, std::string_view property,
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 3> force_domain(const T& solid_fraction, const char* property,
                                                             const T& property_value, const T& coefficient) {
   return arguments(solid_fraction_argument(solid_fraction), property_argument(property, property_value),
                    Argument<T>{"coefficient", coefficient, domains::non_negative<T>()});

@@ -54,6 +54,16 @@ struct Recurrence {
 
 namespace detail {
 
+// Whether x is a normal floating-point number (not 0, subnormal, ±∞ or NaN). Not std::isnormal:
+// nvcc compiles std::isnormal in device code to `false`, without a diagnostic (seen on an H100:
+// every device inversion reported invalid_input; tests/cuda/device_kernels.cu).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr bool is_normal(const T& x) {
+  using std::abs;
+  const T magnitude = abs(x);
+  return magnitude >= std::numeric_limits<T>::min() && magnitude <= std::numeric_limits<T>::max();
+}
+
 // IEEE binary64/binary32: exponents are read from, and powers of two written into, the
 // exponent field (a per-cell library call to frexp/ldexp costs more than Wheeler's whole
 // arithmetic at n = 3). Other types (long double, multiprecision) use frexp/ldexp.
@@ -99,8 +109,7 @@ FLUIDBED_HOST_DEVICE constexpr int nearest_biased_exponent(const T& x) {
 template <class T>
 FLUIDBED_HOST_DEVICE int nearest_power_of_two_exponent(const T& x) {
   if constexpr (has_binary_layout<T>) {
-    using std::isnormal;
-    if (isnormal(x)) return nearest_biased_exponent(x) - (std::numeric_limits<T>::max_exponent - 1);
+    if (is_normal(x)) return nearest_biased_exponent(x) - (std::numeric_limits<T>::max_exponent - 1);
   }
   using std::frexp;
   int e = 0;
@@ -160,10 +169,9 @@ FLUIDBED_HOST_DEVICE bool finite_prefix(const std::array<T, N>& a, const std::ar
 template <class T>
 FLUIDBED_HOST_DEVICE bool scaled_moments_in_range(std::span<const T> m, std::span<const T> scaled) {
   using std::isfinite;
-  using std::isnormal;
   for (const T& x : scaled)
     if (!isfinite(x)) return false;
-  return m.size() < 2 || m[1] == T(0) || isnormal(scaled[1]);
+  return m.size() < 2 || m[1] == T(0) || is_normal(scaled[1]);
 }
 
 }  // namespace detail
@@ -176,9 +184,8 @@ namespace detail {
 // floating-point range produces: then ldexp itself is used).
 template <class T>
 FLUIDBED_HOST_DEVICE T times_power_of_two(const T& x, const T& power, int e) {
-  using std::isnormal;
   using std::ldexp;
-  return isnormal(power) ? x * power : ldexp(x, e);
+  return is_normal(power) ? x * power : ldexp(x, e);
 }
 
 }  // namespace detail
@@ -430,7 +437,6 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
   using std::abs;
   using std::frexp;
   using std::isfinite;
-  using std::isnormal;
   using std::ldexp;
   if (!detail::count_within(m.size(), 2, 2 * N, detail::Parity::even)) {
     if (zeta_out) *zeta_out = {};
@@ -461,7 +467,7 @@ FLUIDBED_HOST_DEVICE Recurrence<T, N> product_difference_unscaled(std::span<cons
     bool lost = false;  // an entry pushed below the normal range by the largest one's shift
     for (int p = 0; p <= rows - q; ++p) {
       const T renormalised = ldexp(column[p], -shift);
-      lost = lost || (column[p] != T(0) && !isnormal(renormalised));
+      lost = lost || (column[p] != T(0) && !detail::is_normal(renormalised));
       column[p] = renormalised;
     }
     if (lost && q < rows) {

@@ -111,7 +111,7 @@ struct RichardsonZakiExponent {
 // Values: n(1) = 4.442553191, n(10) = 3.609618, n(100) = 2.767310.
 // Validity: every Re_t >= 0, by construction between the two limits.
 struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
-  static constexpr std::string_view argument = "terminal_reynolds";
+  static constexpr const char* argument = "terminal_reynolds";
   constexpr std::string_view name() const { return "MazzeiExponent"; }
   constexpr std::string_view reference() const {
     return "Mazzei, L., Lettieri, P. (2007) Chem. Eng. Sci. 62, 6129-6142, doi:10.1016/j.ces.2007.06.028";
@@ -170,7 +170,7 @@ struct MazzeiExponent : RichardsonZakiExponent<MazzeiExponent> {
 // −0.0004 at 500 (the wall terms add their own). Fitted for 0 <= d/D <~ 0.1.
 // Parameter: d/D ∈ [0, 1) (default 0).
 struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exponent> {
-  static constexpr std::string_view argument = "terminal_reynolds";
+  static constexpr const char* argument = "terminal_reynolds";
   double wall_ratio;  // d/D
 
   constexpr explicit RichardsonZaki1954Exponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
@@ -215,7 +215,7 @@ struct RichardsonZaki1954Exponent : RichardsonZakiExponent<RichardsonZaki1954Exp
 // a smooth fit of the 1954 correlation without wall effect; limits 4.7 and
 // 0.41/0.175 = 2.342857 (seed 000 §3.4.3 quotes 2.35).
 struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
-  static constexpr std::string_view argument = "terminal_reynolds";
+  static constexpr const char* argument = "terminal_reynolds";
   constexpr std::string_view name() const { return "RoweExponent"; }
   constexpr std::string_view reference() const { return "Rowe, P.N. (1987) Chem. Eng. Sci. 42, 2795-2796"; }
   constexpr Validity<1> validity() const {
@@ -243,7 +243,7 @@ struct RoweExponent : RichardsonZakiExponent<RoweExponent> {
 // beyond, X < 0, n grows with Ar and has a pole at X = −1: the correlation has left its
 // data, and such d/D are out of domain. Parameter: d/D ∈ [0, 0.0391) (default 0).
 struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
-  static constexpr std::string_view argument = "archimedes";
+  static constexpr const char* argument = "archimedes";
   double wall_ratio;  // d/D
 
   constexpr explicit KhanRichardsonExponent(double wall_ratio = 0) : wall_ratio(wall_ratio) {}
@@ -293,7 +293,7 @@ struct KhanRichardsonExponent : RichardsonZakiExponent<KhanRichardsonExponent> {
 //
 // limits 5.1 and 2.7.
 struct GarsideAlDibouniExponent : RichardsonZakiExponent<GarsideAlDibouniExponent> {
-  static constexpr std::string_view argument = "terminal_reynolds";
+  static constexpr const char* argument = "terminal_reynolds";
   constexpr std::string_view name() const { return "GarsideAlDibouniExponent"; }
   constexpr std::string_view reference() const {
     return "Garside, J., Al-Dibouni, M.R. (1977) Ind. Eng. Chem. Process Des. Dev. 16, 206-214, "
