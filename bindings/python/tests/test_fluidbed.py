@@ -1,11 +1,11 @@
 """The Python package against the C interface and the reference tables (pytest, ctest python.pytest).
 
-Bit for bit: every drag reference row (both conventions, derivatives), every one-class
-kinetic-theory row, every mixture, solid-solid drag and gas exchange source row, the elastic
-states, and the moments reference sets (with corrupted copies) through the inversion, the
+Bit for bit: every drag reference row (both conventions, derivatives), every sphere drag,
+settling and minimum-fluidization closure row, every one-class kinetic-theory and friction row,
+every mixture, solid-solid drag and gas exchange source row, the elastic states, and the moments reference sets (with corrupted copies) through the inversion, the
 realizability test and the correction equal the C interface's result, called through ctypes on the
 same numbers (tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++
-library); the values also lie within 1e-12 (drag) or 1e-13 of the mpmath tables. Then shapes and
+library); the values also lie within 1e-12 (drag), 1e-9 (settling) or 1e-13 of the mpmath tables. Then shapes and
 broadcasting, float32, bad input, the parameters and help().
 
 Environment: FLUIDBED_C_LIBRARY (the built libfluidbed_c), FLUIDBED_REFERENCE_DIR (tests/reference).
@@ -442,3 +442,102 @@ def test_realizability_and_correction_shapes_float32_and_errors():
         fluidbed.correct(np.ones((3, 0)))
     nan_cell = fluidbed.correct([1.0, np.nan, 1.0])
     assert fluidbed.CORRECTION_STATUSES[nan_cell.status] == "failed"
+
+
+def c_one_argument(function, handle, x):
+    """A C function of one argument array (value, derivative) on one cell."""
+    value, slope = np.empty(1), np.empty(1)
+    error = CError()
+    assert function(handle, ctypes.c_size_t(1), ptr(np.array([x])), ptr(value), ptr(slope), ctypes.byref(error)) == 0, \
+        error.message
+    return value, slope
+
+
+SETTLING_CLOSURES = {"rz_exponent_mazzei": ("MazzeiExponent", None), "rz_exponent_rowe1987": ("RoweExponent", None),
+                     "rz_exponent_garside_aldibouni1977": ("GarsideAlDibouniExponent", None),
+                     "rz_exponent_khan_richardson1989": ("KhanRichardsonExponent", "wall_ratio"),
+                     "rz_exponent_richardson_zaki1954": ("RichardsonZaki1954Exponent", "wall_ratio"),
+                     "terminal_velocity_stokes": ("StokesTerminalVelocity", None),
+                     "terminal_velocity_newton": ("NewtonTerminalVelocity", None),
+                     "terminal_velocity_dallavalle": ("DallavalleTerminalVelocity", None),
+                     "terminal_velocity_schillernaumann": ("SchillerNaumannTerminalVelocity", None),
+                     "remf_ergun": ("ErgunMinimumFluidization", "voidage"),
+                     "remf_wenyu1966": ("WenYuMinimumFluidization", None)}
+
+
+def test_sphere_drag_settling_and_fluidization_rows_bit_for_bit_with_the_c_interface():
+    for row in rows("cd_reference.csv"):
+        name, re = row["law"] + "Coefficient", np.array([float(row["reynolds"])])
+        python = fluidbed.closure(name).cd_re(re, derivatives=True)
+        c = c_one_argument(C.fluidbed_sphere_drag_coefficient, c_closure(name), re[0])
+        assert same_bits(python.value, c[0]) and same_bits(python.derivative, c[1])
+    compared = 0
+    for row in rows("settling_reference.csv"):
+        if row["quantity"] not in SETTLING_CLOSURES:
+            continue  # bed expansion and u_mf in m/s: not closures
+        name, parameter = SETTLING_CLOSURES[row["quantity"]]
+        p = [float(row[f"param{i}"]) for i in range(1, 5)]
+        law, handle = fluidbed.closure(name), c_closure(name)
+        if parameter:
+            law.set(**{parameter: p[1]})
+            assert C.fluidbed_closure_set_parameter(handle, parameter.encode(), ctypes.c_double(p[1]), None) == 0
+        # Re_t or Ar; the terminal-velocity rows give the fluid (ρ_f, μ_f) and the particles (ρ_p, d), and
+        # the library and the table take g = 9.81 m/s².
+        x = np.array([p[0] * (p[2] - p[0]) * 9.81 * p[3] ** 3 / p[1] ** 2 if name.endswith("TerminalVelocity")
+                      else p[0]])
+        if isinstance(law, fluidbed.RichardsonZakiExponent):
+            python = law.exponent(x, derivatives=True)
+            c = c_one_argument(C.fluidbed_richardson_zaki_exponent, handle, x[0])
+        else:
+            python, c = law.reynolds(x, derivatives=True), c_one_argument(C.fluidbed_reynolds_of_archimedes, handle, x[0])
+        assert same_bits(python.value, c[0]) and same_bits(python.derivative, c[1])
+        # and the table's value: Re_t, u_mf's Re_mf or n; u_t [m/s] for the terminal-velocity rows
+        value = python.value * p[1] / (p[0] * p[3]) if name.endswith("TerminalVelocity") else python.value
+        np.testing.assert_allclose(value, float(row["value"]), rtol=1e-9)
+        compared += 1
+    assert compared == 96
+
+
+def test_friction_rows_bit_for_bit_with_the_c_interface():
+    compared = 0
+    for row in rows("ktgf_friction_reference.csv"):
+        number = {k: float(v) for k, v in row.items() if k not in ("function", "variant")}
+        table_parameters = {k: number[k] for k in ("min_fraction", "max_packing", "coefficient", "numerator_exponent",
+                                                   "denominator_exponent")}
+        table_parameters["friction_angle"] = number["friction_angle_deg"] * np.pi / 180
+
+        def made(name):
+            """The closure in Python and in C, with the table's parameters that it has."""
+            law, handle = fluidbed.closure(name), c_closure(name)
+            for key in law.parameters.keys() & table_parameters.keys():
+                law.set(**{key: table_parameters[key]})
+                assert C.fluidbed_closure_set_parameter(handle, key.encode(), ctypes.c_double(table_parameters[key]),
+                                                        None) == 0
+            return law, handle
+
+        phi = np.array([number["solid_fraction"]])
+        rate = [np.array([number[k]]) for k in ("divergence", "deviatoric_contraction")]
+        if row["variant"] == "srivastava_sundaresan":
+            law, handle = made("SrivastavaSundaresan")
+            state = [phi, np.array([number["granular_temperature"]]), np.array([number["diameter"]]), *rate]
+            python = law.stress(*state, derivatives=True)
+            out = [np.empty(1) for _ in range(4)]
+            assert C.fluidbed_frictional_stress(handle, ctypes.c_size_t(1), *(ptr(a) for a in state),
+                                                *(ptr(a) for a in out), None) == 0
+            for p, q in zip(python, out):
+                assert same_bits(p, q)
+        else:
+            law, handle = made("JohnsonJacksonPressure" if row["variant"].endswith("johnson_jackson")
+                               else "SchaefferPressure")
+            python = law.pressure(phi, derivatives=True)
+            c = c_one_argument(C.fluidbed_of_solid_fraction, handle, phi[0])
+            assert same_bits(python.value, c[0]) and same_bits(python.d_solid_fraction, c[1])
+            if row["function"] == "frictional_viscosity":
+                viscosity, handle = made("SchaefferViscosity")
+                python = viscosity.viscosity(c[0], *rate, derivatives=True)
+                out = [np.empty(1) for _ in range(2)]
+                assert C.fluidbed_frictional_viscosity(handle, ctypes.c_size_t(1), ptr(c[0]), *(ptr(a) for a in rate),
+                                                       *(ptr(a) for a in out), None) == 0
+                assert same_bits(python.value, out[0]) and same_bits(python.derivative, out[1])
+        compared += 1
+    assert compared == 1253
