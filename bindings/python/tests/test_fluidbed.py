@@ -2,11 +2,12 @@
 
 Bit for bit: every drag reference row (both conventions, derivatives), every sphere drag,
 settling and minimum-fluidization closure row, every one-class kinetic-theory and friction row,
-every mixture, solid-solid drag and gas exchange source row, the elastic states, and the moments reference sets (with corrupted copies) through the inversion, the
-realizability test and the correction equal the C interface's result, called through ctypes on the
-same numbers (tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++
-library); the values also lie within 1e-12 (drag), 1e-9 (settling) or 1e-13 of the mpmath tables. Then shapes and
-broadcasting, float32, bad input, the parameters and help().
+every mixture, solid-solid drag and gas exchange source row, the elastic states, and the moments
+reference sets (with corrupted copies) through the inversion, the realizability test and the
+correction equal the C interface's result, called through ctypes on the same numbers
+(tests/test_c_interface.cpp shows the C interface equal bit for bit to the C++ library); the
+values also lie within 1e-12 (drag), 1e-9 (settling) or 1e-13 of the mpmath tables. Then shapes
+and broadcasting, float32, bad input, the parameters and help().
 
 Environment: FLUIDBED_C_LIBRARY (the built libfluidbed_c), FLUIDBED_REFERENCE_DIR (tests/reference).
 """
