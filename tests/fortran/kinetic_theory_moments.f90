@@ -8,6 +8,24 @@
 !    rule), 1e-13 value and 1e-12 derivatives scaled as tests/test_kinetic_theory_mixture.cpp;
 !  - every gas exchange source row of ktgf_exchange_reference.csv (each source with only its own
 !    arguments), 1e-13 value and 1e-11 derivatives as tests/test_kinetic_theory_friction_exchange.cpp;
+!  - every row of cd_reference.csv: C_D Re of the single-sphere closures (law//'Coefficient'), Stokes
+!    exactly and the others within 1e-14 as tests/test_drag_family.cpp (the table has no derivative);
+!  - the 96 closure rows of settling_reference.csv (tests/test_c_interface.cpp's mapping): the
+!    Richardson-Zaki exponents within 1e-14, Re_mf within 1e-13, the terminal velocities
+!    u_t = Re_t(Ar) μ/(ρ_f d), Ar with g = 9.81 as the library's archimedes(), within 1e-13
+!    (Schiller-Naumann's root 1e-12), as tests/test_settling.cpp but relative;
+!  - every row of ktgf_friction_reference.csv: the Johnson-Jackson and Schaeffer pressures, Schaeffer's
+!    viscosity of either (∂/∂φ by the chain rule) and the Srivastava-Sundaresan stress, with the row's
+!    parameters, value within 1e-13 and ∂/∂φ within 1e-11 of |∂| + 1e-9 |value| as
+!    tests/test_kinetic_theory_friction_exchange.cpp (the C functions give no other derivative);
+!  - elastic_state_reference.csv: Mazzei-Lettieri's modulus at each drag state (ε, w) within 1e-13 of
+!    the table's, as tests/test_elastic.cpp; the three moduli at equilibrium (g = 9.80665, Re_t =
+!    the reynolds column, as tests/test_c_interface.cpp) have no value in the table: a status and a
+!    finite modulus only; the models with no modulus off equilibrium refuse a state;
+!  - moments_reference.csv: every case and node count (1 to FLUIDBED_MAX_NODES) with a Gauss rule,
+!    inverted from its 2N moments (whole line for hermite_* and random_jacobi_*), nodes within
+!    8·2N·node_condition + 8e-16 of the spread and weights within 8·2N·weight_condition + 8e-16
+!    of m_0, as tests/test_moment_oracle.cpp (the Radau rule, not a Gauss rule, is left out);
 !  - moments: the inversion recovers known atoms, a zero cell is zero mass, the realizability of
 !    sets with m_0 m_2 < m_1^2 and m_1 m_3 < m_2^2, the correction's monodisperse and log-normal
 !    sets (tests/test_moment_correction.cpp's numbers) and that they come back realizable;
@@ -17,10 +35,10 @@
 ! Usage: fluidbed_fortran_kinetic_theory_moments PATH/TO/tests/reference
 program kinetic_theory_moments
   use, intrinsic :: iso_c_binding, only: c_double, c_int
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
   use fluidbed
   implicit none
-  integer, parameter :: field = 40
+  integer, parameter :: field = 40, key_length = 8 * (field + 1)
   ! A CSV table: its header's names and its cells as text, cells(column, row).
   type :: table
     character(len=field), allocatable :: names(:)
@@ -42,9 +60,28 @@ program kinetic_theory_moments
   character(len=*), parameter :: mixture_tables(3) = [character(len=24) :: 'lebowitz', 'mansoori', &
     'modified_mansoori']
   character(len=*), parameter :: mixture_names(3) = [character(len=24) :: 'Lebowitz', 'Mansoori', 'ModifiedMansoori']
+  ! settling_reference.csv's closure rows: the closure and the parameter param2 sets
+  ! (tests/test_c_interface.cpp), and tests/test_settling.cpp's tolerance.
+  character(len=*), parameter :: settling_tables(11) = [character(len=40) :: 'rz_exponent_mazzei', &
+    'rz_exponent_rowe1987', 'rz_exponent_garside_aldibouni1977', 'rz_exponent_khan_richardson1989', &
+    'rz_exponent_richardson_zaki1954', 'terminal_velocity_stokes', 'terminal_velocity_newton', &
+    'terminal_velocity_dallavalle', 'terminal_velocity_schillernaumann', 'remf_ergun', 'remf_wenyu1966']
+  character(len=*), parameter :: settling_names(11) = [character(len=40) :: 'MazzeiExponent', 'RoweExponent', &
+    'GarsideAlDibouniExponent', 'KhanRichardsonExponent', 'RichardsonZaki1954Exponent', 'StokesTerminalVelocity', &
+    'NewtonTerminalVelocity', 'DallavalleTerminalVelocity', 'SchillerNaumannTerminalVelocity', &
+    'ErgunMinimumFluidization', 'WenYuMinimumFluidization']
+  character(len=*), parameter :: settling_parameters(11) = [character(len=12) :: '', '', '', 'wall_ratio', &
+    'wall_ratio', '', '', '', '', 'voidage', '']
+  real(c_double), parameter :: settling_tolerances(11) = [1e-14_c_double, 1e-14_c_double, 1e-14_c_double, &
+    1e-14_c_double, 1e-14_c_double, 1e-13_c_double, 1e-13_c_double, 1e-13_c_double, 1e-12_c_double, &
+    1e-13_c_double, 1e-13_c_double]
+  ! The library's g for Ar (include/fluidbed/properties.hpp) and π.
+  real(c_double), parameter :: standard_gravity = 9.81_c_double
+  real(c_double), parameter :: pi = 3.14159265358979323846264338327950288_c_double
   real(c_double), parameter :: zero = 0
   character(len=1024) :: directory
-  integer :: failures, radial_rows, law_rows, mixture_rows, solid_drag_rows, exchange_rows
+  integer :: failures, radial_rows, law_rows, mixture_rows, solid_drag_rows, exchange_rows, sphere_drag_rows, &
+             settling_rows, friction_rows, elastic_rows, moment_rules
   real(c_double) :: nan
 
   failures = 0
@@ -53,14 +90,24 @@ program kinetic_theory_moments
   call check_one_class(trim(directory) // '/ktgf_reference.csv')
   call check_mixture(trim(directory) // '/ktgf_mixture_reference.csv')
   call check_exchange(trim(directory) // '/ktgf_exchange_reference.csv')
+  call check_sphere_drag(trim(directory) // '/cd_reference.csv')
+  call check_settling(trim(directory) // '/settling_reference.csv')
+  call check_friction(trim(directory) // '/ktgf_friction_reference.csv')
+  call check_elastic(trim(directory) // '/elastic_state_reference.csv')
+  call check_moment_table(trim(directory) // '/moments_reference.csv')
   call check_moments()
   call check_metadata()
   call check_bad_input()
   print '(a, 5(i0, a))', 'fortran: ', radial_rows, ' radial distribution rows, ', law_rows, &
         ' one-class law rows, ', mixture_rows, ' mixture radial distribution rows, ', solid_drag_rows, &
         ' solid-solid drag rows, ', exchange_rows, ' gas exchange rows'
+  print '(a, 5(i0, a))', 'fortran: ', sphere_drag_rows, ' sphere drag rows, ', settling_rows, &
+        ' settling closure rows, ', friction_rows, ' friction rows, ', elastic_rows, ' elastic state rows, ', &
+        moment_rules, ' moment rules (case, node count)'
   call check(radial_rows == 191 .and. law_rows == 1092 .and. mixture_rows == 130 .and. solid_drag_rows == 224 .and. &
-             exchange_rows == 72, 'every row of the tables compared')
+             exchange_rows == 72 .and. sphere_drag_rows == 30 .and. settling_rows == 96 .and. &
+             friction_rows == 1253 .and. elastic_rows == 75 .and. moment_rules == 215, &
+             'every row of the tables compared')
   if (failures == 0) then
     print '(a)', 'fortran: kinetic theory and moments: all checks passed'
   else
@@ -172,6 +219,22 @@ contains
     read(t%cells(column(t, name), row), *) number
   end function
 
+  ! Each row's key: the texts of the named columns (up to 8), joined.
+  function keys_of(t, columns) result(keys)
+    type(table), intent(in) :: t
+    character(len=*), intent(in) :: columns(:)
+    character(len=key_length), allocatable :: keys(:)
+    integer :: row, j
+    if (size(columns) > key_length / (field + 1)) error stop 'keys_of: too many columns'
+    allocate(keys(size(t%cells, 2)))
+    keys = ''
+    do row = 1, size(keys)
+      do j = 1, size(columns)
+        keys(row) = trim(keys(row)) // ' ' // text(t, row, trim(columns(j)))
+      end do
+    end do
+  end function
+
   ! The rows whose key is that of `row` and that are not done yet (then done).
   function group_of(keys, row, done) result(rows)
     character(len=*), intent(in) :: keys(:)
@@ -193,6 +256,21 @@ contains
     do i = 1, size(tables)
       if (tables(i) == name) library = trim(names(i))
     end do
+  end function
+
+  ! The position of name in list, 0 if absent.
+  integer function position(list, name)
+    character(len=*), intent(in) :: list(:), name
+    do position = 1, size(list)
+      if (list(position) == name) return
+    end do
+    position = 0
+  end function
+
+  logical function ends_with(string, suffix)
+    character(len=*), intent(in) :: string, suffix
+    ends_with = len(string) >= len(suffix)
+    if (ends_with) ends_with = string(len(string) - len(suffix) + 1:) == suffix
   end function
 
   logical function has_parameter(closure, name)
@@ -237,15 +315,13 @@ contains
   subroutine check_one_class(file)
     character(len=*), intent(in) :: file
     type(table) :: t
-    character(len=3 * field), allocatable :: keys(:)
+    character(len=key_length), allocatable :: keys(:)
     logical, allocatable :: done(:)
     integer, allocatable :: rows(:)
     integer :: row
     t = read_table(file)
-    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
-    do row = 1, size(keys)
-      keys(row) = text(t, row, 'function') // ' ' // text(t, row, 'variant') // ' ' // text(t, row, 'extra')
-    end do
+    keys = keys_of(t, [character(len=8) :: 'function', 'variant', 'extra'])
+    allocate(done(size(keys)))
     done = .false.
     radial_rows = 0
     law_rows = 0
@@ -336,20 +412,14 @@ contains
   subroutine check_mixture(file)
     character(len=*), intent(in) :: file
     type(table) :: t
-    character(len=12 * field), allocatable :: keys(:)
+    character(len=key_length), allocatable :: keys(:)
     logical, allocatable :: done(:)
     integer, allocatable :: rows(:)
-    integer :: row, j
-    character(len=*), parameter :: key_columns(8) = [character(len=24) :: 'function', 'variant', 'classes', 'i', &
-                                                     'k', 'max_packing', 'restitution', 'friction_coefficient']
+    integer :: row
     t = read_table(file)
-    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
-    keys = ''
-    do row = 1, size(keys)
-      do j = 1, size(key_columns)
-        keys(row) = trim(keys(row)) // ' ' // text(t, row, trim(key_columns(j)))
-      end do
-    end do
+    keys = keys_of(t, [character(len=24) :: 'function', 'variant', 'classes', 'i', 'k', 'max_packing', &
+                                            'restitution', 'friction_coefficient'])
+    allocate(done(size(keys)))
     done = .false.
     mixture_rows = 0
     solid_drag_rows = 0
@@ -447,15 +517,12 @@ contains
   subroutine check_exchange(file)
     character(len=*), intent(in) :: file
     type(table) :: t
-    character(len=field), allocatable :: keys(:)
+    character(len=key_length), allocatable :: keys(:)
     logical, allocatable :: done(:)
     integer, allocatable :: rows(:)
     integer :: row
     t = read_table(file)
-    allocate(keys(size(t%cells, 2)), done(size(t%cells, 2)))
-    do row = 1, size(keys)
-      keys(row) = text(t, row, 'variant')
-    end do
+    keys = keys_of(t, [character(len=7) :: 'variant'])
     done = [(text(t, row, 'function') /= 'fluctuating_energy_source', row = 1, size(keys))]
     exchange_rows = 0
     do row = 1, size(keys)
@@ -511,6 +578,264 @@ contains
     end do
     exchange_rows = exchange_rows + size(rows)
     call fluidbed_destroy(law)
+  end subroutine
+
+  ! ---- Single spheres, settling and minimum fluidization -------------------------------------------
+
+  ! cd_reference.csv: C_D Re of law//'Coefficient' at each Re, Stokes exactly (24) and the others within
+  ! 1e-14 (tests/test_drag_family.cpp). The table has no derivative.
+  subroutine check_sphere_drag(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    type(fluidbed_closure) :: law
+    character(len=key_length), allocatable :: keys(:)
+    character(len=:), allocatable :: message, name
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    real(c_double), allocatable :: re(:), value(:)
+    real(c_double) :: tolerance
+    integer :: row, c, status
+    t = read_table(file)
+    keys = keys_of(t, [character(len=3) :: 'law'])
+    allocate(done(size(keys)))
+    done = .false.
+    sphere_drag_rows = 0
+    do row = 1, size(keys)
+      if (done(row)) cycle
+      rows = group_of(keys, row, done)
+      name = text(t, row, 'law') // 'Coefficient'
+      law = created(name)
+      re = [(number(t, rows(c), 'reynolds'), c = 1, size(rows))]
+      allocate(value(size(rows)))
+      status = fluidbed_sphere_drag_coefficient(law, re, value, message=message)
+      call check(status == FLUIDBED_OK, name // ': ' // message)
+      tolerance = 1e-14_c_double
+      if (name == 'StokesCoefficient') tolerance = 0
+      do c = 1, size(rows)
+        call check(relative_difference(value(c), number(t, rows(c), 'cd_times_re')) <= tolerance, &
+                   name // ': C_D Re against the reference table')
+      end do
+      sphere_drag_rows = sphere_drag_rows + size(rows)
+      deallocate(value)
+      call fluidbed_destroy(law)
+    end do
+  end subroutine
+
+  ! settling_reference.csv's closure rows (the bed expansion and u_mf in m/s are not closures): the
+  ! Richardson-Zaki exponents of Re_t or Ar, Re_mf of Ar, and the terminal velocities from Re_t of
+  ! Ar = ρ_f (ρ_p − ρ_f) g d³/μ_f² (param1 … param4 = ρ_f, μ_f, ρ_p, d), u_t = Re_t μ_f/(ρ_f d) as
+  ! the library's velocity_from_reynolds.
+  subroutine check_settling(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    type(fluidbed_closure) :: law
+    character(len=key_length), allocatable :: keys(:)
+    character(len=:), allocatable :: message, name, parameter
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    real(c_double), allocatable :: x(:), value(:), rho_f(:), mu(:), rho_p(:), d(:)
+    integer :: row, c, status, i
+    t = read_table(file)
+    keys = keys_of(t, [character(len=8) :: 'quantity', 'param2'])
+    done = [(position(settling_tables, text(t, row, 'quantity')) == 0, row = 1, size(keys))]
+    settling_rows = 0
+    do row = 1, size(keys)
+      if (done(row)) cycle
+      rows = group_of(keys, row, done)
+      i = position(settling_tables, text(t, row, 'quantity'))
+      name = trim(settling_names(i))
+      parameter = trim(settling_parameters(i))
+      if (parameter == '') then
+        law = created(name)
+      else
+        law = created(name, parameter, number(t, row, 'param2'))
+      end if
+      x = [(number(t, rows(c), 'param1'), c = 1, size(rows))]  ! Re_t or Ar
+      if (ends_with(name, 'TerminalVelocity')) then
+        rho_f = x
+        mu = [(number(t, rows(c), 'param2'), c = 1, size(rows))]
+        rho_p = [(number(t, rows(c), 'param3'), c = 1, size(rows))]
+        d = [(number(t, rows(c), 'param4'), c = 1, size(rows))]
+        x = rho_f * (rho_p - rho_f) * standard_gravity * d * d * d / (mu * mu)
+      end if
+      allocate(value(size(rows)))
+      if (fluidbed_richardson_zaki_argument(law) /= '') then
+        status = fluidbed_richardson_zaki_exponent(law, x, value, message=message)
+      else
+        status = fluidbed_reynolds_of_archimedes(law, x, value, message=message)
+        if (ends_with(name, 'TerminalVelocity')) value = value * mu / (rho_f * d)
+      end if
+      call check(status == FLUIDBED_OK, name // ': ' // message)
+      do c = 1, size(rows)
+        call check(relative_difference(value(c), number(t, rows(c), 'value')) < settling_tolerances(i), &
+                   name // ': against the reference table')
+      end do
+      settling_rows = settling_rows + size(rows)
+      deallocate(value)
+      call fluidbed_destroy(law)
+    end do
+  end subroutine
+
+  ! ---- Friction -------------------------------------------------------------------------------------
+
+  ! The row's parameters that the closure has (tests/test_c_interface.cpp), the friction angle in
+  ! radians.
+  subroutine set_friction_parameters(law, t, row)
+    type(fluidbed_closure), intent(inout) :: law
+    type(table), intent(in) :: t
+    integer, intent(in) :: row
+    character(len=*), parameter :: names(5) = [character(len=20) :: 'min_fraction', 'max_packing', 'coefficient', &
+                                               'numerator_exponent', 'denominator_exponent']
+    character(len=:), allocatable :: message
+    integer :: j, status
+    do j = 1, size(names)
+      if (has_parameter(law, trim(names(j)))) then
+        status = fluidbed_set_parameter(law, trim(names(j)), number(t, row, trim(names(j))), message)
+        call check(status == FLUIDBED_OK, fluidbed_name(law) // ' ' // trim(names(j)) // ': ' // message)
+      end if
+    end do
+    if (has_parameter(law, 'friction_angle')) then
+      status = fluidbed_set_parameter(law, 'friction_angle', number(t, row, 'friction_angle_deg') * pi / 180, message)
+      call check(status == FLUIDBED_OK, fluidbed_name(law) // ' friction_angle: ' // message)
+    end if
+  end subroutine
+
+  ! Every row of ktgf_friction_reference.csv, in groups of one function, variant and parameter set.
+  subroutine check_friction(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=key_length), allocatable :: keys(:)
+    logical, allocatable :: done(:)
+    integer, allocatable :: rows(:)
+    integer :: row
+    t = read_table(file)
+    keys = keys_of(t, [character(len=20) :: 'function', 'variant', 'min_fraction', 'max_packing', 'coefficient', &
+                                            'numerator_exponent', 'denominator_exponent', 'friction_angle_deg'])
+    allocate(done(size(keys)))
+    done = .false.
+    friction_rows = 0
+    do row = 1, size(keys)
+      if (done(row)) cycle
+      rows = group_of(keys, row, done)
+      call check_friction_rows(t, rows)
+    end do
+  end subroutine
+
+  ! The Johnson-Jackson and Schaeffer pressures (fluidbed_of_solid_fraction), Schaeffer's viscosity
+  ! of either (fluidbed_frictional_viscosity of p_f; ∂μ/∂φ = ∂μ/∂p_f dp_f/dφ) and the
+  ! Srivastava-Sundaresan stress (fluidbed_frictional_stress): the value within 1e-13 and ∂/∂φ
+  ! within 1e-11 of |∂| + 1e-9 |value| (tests/test_kinetic_theory_friction_exchange.cpp).
+  subroutine check_friction_rows(t, rows)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    type(fluidbed_closure) :: law, pressure_law
+    real(c_double), dimension(size(rows)) :: phi, theta, d, divergence, contraction, pressure, viscosity, &
+                                             d_pressure, d_viscosity, value, d_phi
+    real(c_double) :: expected
+    character(len=:), allocatable :: message, what, variant, name
+    integer :: status, c
+    what = text(t, rows(1), 'function')
+    variant = text(t, rows(1), 'variant')
+    do c = 1, size(rows)
+      phi(c) = number(t, rows(c), 'solid_fraction')
+      theta(c) = number(t, rows(c), 'granular_temperature')
+      d(c) = number(t, rows(c), 'diameter')
+      divergence(c) = number(t, rows(c), 'divergence')
+      contraction(c) = number(t, rows(c), 'deviatoric_contraction')
+    end do
+    if (variant == 'srivastava_sundaresan') then
+      name = 'SrivastavaSundaresan'
+      law = created(name)
+      call set_friction_parameters(law, t, rows(1))
+      status = fluidbed_frictional_stress(law, phi, theta, d, divergence, contraction, pressure, viscosity, &
+                                          d_pressure, d_viscosity, message)
+      call check(status == FLUIDBED_OK, name // ': ' // message)
+      call fluidbed_destroy(law)
+    else
+      name = 'SchaefferPressure'
+      if (ends_with(variant, 'johnson_jackson')) name = 'JohnsonJacksonPressure'
+      pressure_law = created(name)
+      call set_friction_parameters(pressure_law, t, rows(1))
+      status = fluidbed_of_solid_fraction(pressure_law, phi, pressure, d_pressure, message)
+      call check(status == FLUIDBED_OK, name // ': ' // message)
+      call fluidbed_destroy(pressure_law)
+      if (what == 'frictional_viscosity') then
+        name = 'SchaefferViscosity of ' // name
+        law = created('SchaefferViscosity')
+        call set_friction_parameters(law, t, rows(1))
+        status = fluidbed_frictional_viscosity(law, pressure, divergence, contraction, viscosity, d_viscosity, &
+                                               message)
+        call check(status == FLUIDBED_OK, name // ': ' // message)
+        d_viscosity = d_viscosity * d_pressure
+        call fluidbed_destroy(law)
+      end if
+    end if
+    if (what == 'frictional_pressure') then
+      value = pressure
+      d_phi = d_pressure
+    else
+      call check(what == 'frictional_viscosity', 'a friction row: ' // what)
+      value = viscosity
+      d_phi = d_viscosity
+    end if
+    do c = 1, size(rows)
+      expected = number(t, rows(c), 'value')
+      call check(relative_difference(value(c), expected) < 1e-13_c_double, name // ' ' // what // ': value')
+      call check(scaled_error(d_phi(c), number(t, rows(c), 'd_solid_fraction'), 1e-9_c_double * abs(expected)) &
+                 < 1e-11_c_double, name // ' ' // what // ': d/dphi')
+    end do
+    friction_rows = friction_rows + size(rows)
+  end subroutine
+
+  ! ---- Elastic moduli -------------------------------------------------------------------------------
+
+  ! elastic_state_reference.csv: states (ε, w) off equilibrium; its modulus column is
+  ! Mazzei-Lettieri's E_r = −[4(1−ε)/(π d²)] H F̂ at the state, within 1e-13 (tests/test_elastic.cpp).
+  ! The table has no modulus at equilibrium: the three models there (g = 9.80665, Re_t = the
+  ! reynolds column, as tests/test_c_interface.cpp) are only called (a status, a finite value), and
+  ! the two without a modulus off equilibrium refuse a state.
+  subroutine check_elastic(file)
+    character(len=*), intent(in) :: file
+    character(len=*), parameter :: models(3) = [character(len=24) :: 'FoscoloGibilaroModulus', 'JeanFanModulus', &
+                                                'MazzeiLettieriModulus']
+    type(table) :: t
+    type(fluidbed_closure) :: model
+    real(c_double), allocatable :: e(:), w(:), rho_f(:), mu(:), rho_p(:), d(:), re_t(:), g(:), modulus(:), &
+                                   d_voidage(:), d_slip(:)
+    character(len=:), allocatable :: message, name
+    integer :: status, row, j, n
+    t = read_table(file)
+    n = size(t%cells, 2)
+    e = [(number(t, row, 'voidage'), row = 1, n)]
+    w = [(number(t, row, 'slip'), row = 1, n)]
+    rho_f = [(number(t, row, 'fluid_density'), row = 1, n)]
+    mu = [(number(t, row, 'fluid_viscosity'), row = 1, n)]
+    rho_p = [(number(t, row, 'particle_density'), row = 1, n)]
+    d = [(number(t, row, 'diameter'), row = 1, n)]
+    re_t = [(number(t, row, 'reynolds'), row = 1, n)]
+    allocate(g(n), modulus(n), d_voidage(n), d_slip(n))
+    g = 9.80665_c_double
+    elastic_rows = 0
+    do j = 1, size(models)
+      name = trim(models(j))
+      model = created(name)
+      status = fluidbed_elastic_modulus_at_equilibrium(model, e, rho_f, mu, rho_p, d, re_t, g, modulus, d_voidage, &
+                                                       message)
+      call check(status == FLUIDBED_OK .and. all(ieee_is_finite(modulus)) .and. all(ieee_is_finite(d_voidage)), &
+                 name // ' at equilibrium: ' // message)
+      status = fluidbed_elastic_modulus_at_state(model, e, w, rho_f, mu, d, modulus, d_voidage, d_slip, message)
+      if (name == 'MazzeiLettieriModulus') then
+        call check(status == FLUIDBED_OK, name // ' at a state: ' // message)
+        do row = 1, n
+          call check(relative_difference(modulus(row), number(t, row, 'modulus')) < 1e-13_c_double, &
+                     name // ' at a state: against the reference table')
+        end do
+        elastic_rows = elastic_rows + n
+      else
+        call check(status == FLUIDBED_INVALID_ARGUMENT, name // ' refuses a state: ' // message)
+      end if
+      call fluidbed_destroy(model)
+    end do
   end subroutine
 
   ! ---- Moments ----------------------------------------------------------------------------------------
@@ -617,6 +942,108 @@ contains
   elemental logical function same_bits(a, b)
     real(c_double), intent(in) :: a, b
     same_bits = transfer(a, 0_8) == transfer(b, 0_8)
+  end function
+
+  ! ---- The moments reference table --------------------------------------------------------------------
+
+  ! The table's values of (case, n_nodes, quantity) by index (index k at k + 1); none: size 0.
+  function oracle(cases, counts, quantities, indices, values, name, n, quantity) result(v)
+    character(len=*), intent(in) :: cases(:), quantities(:), name, quantity
+    integer, intent(in) :: counts(:), indices(:), n
+    real(c_double), intent(in) :: values(:)
+    real(c_double), allocatable :: v(:)
+    logical :: mask(size(cases))
+    integer :: row
+    mask = cases == name .and. counts == n .and. quantities == quantity
+    if (.not. any(mask)) then
+      allocate(v(0))
+      return
+    end if
+    allocate(v(maxval(indices, mask=mask) + 1))
+    v = nan  ! an index the table lacks compares as a failure
+    do row = 1, size(cases)
+      if (mask(row)) v(indices(row) + 1) = values(row)
+    end do
+  end function
+
+  ! Every case and node count N <= FLUIDBED_MAX_NODES of moments_reference.csv with a Gauss rule,
+  ! inverted from its first 2N moments, all cases of one N and support in one call: nodes within
+  ! 8·2N·node_condition + 8e-16 of their spread (|x_1| for N = 1), weights within
+  ! 8·2N·weight_condition + 8e-16 of m_0 (tests/test_moment_oracle.cpp). hermite_* and
+  ! random_jacobi_* on the whole line, the others on [0, ∞); the printed seed-003 sets at the node
+  ! counts they are realizable for (the only ones with a rule) as well. The Radau rule (a fixed node,
+  ! from 11 moments) is not a Gauss rule of its moments: left out, as there.
+  subroutine check_moment_table(file)
+    character(len=*), intent(in) :: file
+    type(table) :: t
+    character(len=field), allocatable :: cases(:), quantities(:), names(:)
+    integer, allocatable :: counts(:), indices(:), sizes(:), status(:)
+    real(c_double), allocatable :: values(:), m(:, :), nodes(:, :), weights(:, :), x(:), w(:), moments(:)
+    logical, allocatable :: real_line(:), first(:)
+    integer, parameter :: supports(2) = [FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE]
+    character(len=:), allocatable :: message, what
+    real(c_double) :: spread, node_error, weight_error
+    integer :: row, rows, n, c, cell, code, s
+    character(len=8) :: label
+    t = read_table(file)
+    rows = size(t%cells, 2)
+    cases = t%cells(column(t, 'case'), :)
+    quantities = t%cells(column(t, 'quantity'), :)
+    allocate(counts(rows), indices(rows), values(rows), first(rows))
+    do row = 1, rows
+      counts(row) = nint(number(t, row, 'n_nodes'))
+      indices(row) = nint(number(t, row, 'index'))
+      values(row) = number(t, row, 'value')
+      first(row) = quantities(row) == 'node' .and. indices(row) == 0
+    end do
+    moment_rules = 0
+    do n = 1, FLUIDBED_MAX_NODES
+      write(label, '(a, i0)') ' N = ', n
+      do s = 1, size(supports)
+        ! The cases with an n-node rule on this support (each must have 2n moments).
+        names = pack(cases, first .and. counts == n .and. cases /= 'radau_legendre01')
+        real_line = [(index(names(c), 'hermite') == 1 .or. index(names(c), 'random_jacobi') == 1, &
+                      c = 1, size(names))]
+        names = pack(names, real_line .eqv. (supports(s) == FLUIDBED_SUPPORT_REAL_LINE))
+        if (size(names) == 0) cycle
+        allocate(m(size(names), 2 * n), nodes(size(names), n), weights(size(names), n), sizes(size(names)), &
+                 status(size(names)))
+        do c = 1, size(names)
+          moments = oracle(cases, counts, quantities, indices, values, names(c), 0, 'moment')
+          call check(size(moments) >= 2 * n, trim(names(c)) // ': 2N moments')
+          m(c, :) = 0
+          m(c, 1:min(2 * n, size(moments))) = moments(1:min(2 * n, size(moments)))
+        end do
+        code = fluidbed_invert_moments(n, supports(s), m, nodes, weights, sizes, status, message)
+        call check(code == FLUIDBED_OK, 'invert the reference moments: ' // message)
+        do cell = 1, size(names)
+          what = trim(names(cell)) // trim(label)
+          call check(status(cell) == FLUIDBED_INVERSION_OK .and. sizes(cell) == n, what // ': status and size')
+          x = oracle(cases, counts, quantities, indices, values, names(cell), n, 'node')
+          w = oracle(cases, counts, quantities, indices, values, names(cell), n, 'weight')
+          spread = abs(x(1))
+          if (n > 1) spread = x(n) - x(1)
+          node_error = maxval(abs(nodes(cell, :) - x)) / spread
+          weight_error = maxval(abs(weights(cell, :) - w)) / m(cell, 1)
+          call check(node_error <= moment_tolerance(oracle(cases, counts, quantities, indices, values, names(cell), &
+                                                           n, 'node_condition'), n), &
+                     what // ': nodes against the reference table')
+          call check(weight_error <= moment_tolerance(oracle(cases, counts, quantities, indices, values, &
+                                                             names(cell), n, 'weight_condition'), n), &
+                     what // ': weights against the reference table')
+        end do
+        moment_rules = moment_rules + size(names)
+        deallocate(m, nodes, weights, sizes, status)
+      end do
+    end do
+  end subroutine
+
+  ! tests/test_moment_oracle.cpp's 8·2N·conditioning + 8e-16 (the table's one condition row).
+  real(c_double) function moment_tolerance(condition, n)
+    real(c_double), intent(in) :: condition(:)
+    integer, intent(in) :: n
+    moment_tolerance = nan
+    if (size(condition) == 1) moment_tolerance = 8 * 2 * n * condition(1) + 8e-16_c_double
   end function
 
   ! ---- The catalogue and the closures' metadata ---------------------------------------------------
