@@ -511,7 +511,9 @@ TEST_CASE("C interface: the mixture radial distributions and the solid-solid dra
     g.rows.push_back(row);
   }
   std::size_t rdf_rows = 0, drag_rows = 0;
-  for (const auto& [key, g] : groups) {
+  for (const auto& group : groups) {  // no structured binding: clang 14 cannot capture one
+    const std::string& key = group.first;
+    const Cells& g = group.second;
     INFO(key);
     const std::size_t first = g.rows.front(), n = g.rows.size(), classes = g.classes;
     const auto [author, rdf_table_name] = test::split_variant(table.text(first, "variant"));
@@ -598,7 +600,9 @@ TEST_CASE("C interface: the gas exchange sources on every source row of the exch
     if (table.text(row, "function") == "fluctuating_energy_source") groups[table.text(row, "variant")].push_back(row);
   REQUIRE(groups.size() == 3);
   std::size_t compared = 0;
-  for (const auto& [variant, rows] : groups) {
+  for (const auto& group : groups) {  // no structured binding: clang 14 cannot capture one
+    const std::string& variant = group.first;
+    const std::vector<std::size_t>& rows = group.second;
     INFO(variant);
     const auto [author, rdf_table_name] = test::split_variant(variant);
     const bool koch_sangani = author == "koch_sangani";
