@@ -633,7 +633,8 @@ contains
     character(len=:), allocatable :: message, name, parameter
     logical, allocatable :: done(:)
     integer, allocatable :: rows(:)
-    real(c_double), allocatable :: x(:), value(:), rho_f(:), mu(:), rho_p(:), d(:)
+    real(c_double), allocatable :: x(:), value(:), velocity_scale(:)
+    real(c_double) :: rho_f, mu, rho_p, d
     integer :: row, c, status, i
     t = read_table(file)
     keys = keys_of(t, [character(len=8) :: 'quantity', 'param2'])
@@ -650,20 +651,26 @@ contains
       else
         law = created(name, parameter, number(t, row, 'param2'))
       end if
-      x = [(number(t, rows(c), 'param1'), c = 1, size(rows))]  ! Re_t or Ar
-      if (ends_with(name, 'TerminalVelocity')) then
-        rho_f = x
-        mu = [(number(t, rows(c), 'param2'), c = 1, size(rows))]
-        rho_p = [(number(t, rows(c), 'param3'), c = 1, size(rows))]
-        d = [(number(t, rows(c), 'param4'), c = 1, size(rows))]
-        x = rho_f * (rho_p - rho_f) * standard_gravity * d * d * d / (mu * mu)
-      end if
-      allocate(value(size(rows)))
+      ! (explicit loops, not array constructors of conditionally set arrays: gfortran 12 at -O3
+      ! reports those as maybe uninitialized)
+      allocate(x(size(rows)), value(size(rows)), velocity_scale(size(rows)))
+      do c = 1, size(rows)
+        x(c) = number(t, rows(c), 'param1')  ! Re_t or Ar
+        velocity_scale(c) = 1
+        if (ends_with(name, 'TerminalVelocity')) then
+          rho_f = x(c)
+          mu = number(t, rows(c), 'param2')
+          rho_p = number(t, rows(c), 'param3')
+          d = number(t, rows(c), 'param4')
+          x(c) = rho_f * (rho_p - rho_f) * standard_gravity * d * d * d / (mu * mu)
+          velocity_scale(c) = mu / (rho_f * d)
+        end if
+      end do
       if (fluidbed_richardson_zaki_argument(law) /= '') then
         status = fluidbed_richardson_zaki_exponent(law, x, value, message=message)
       else
         status = fluidbed_reynolds_of_archimedes(law, x, value, message=message)
-        if (ends_with(name, 'TerminalVelocity')) value = value * mu / (rho_f * d)
+        value = value * velocity_scale  ! u_t for the terminal velocities; Re_mf unchanged
       end if
       call check(status == FLUIDBED_OK, name // ': ' // message)
       do c = 1, size(rows)
@@ -671,7 +678,7 @@ contains
                    name // ': against the reference table')
       end do
       settling_rows = settling_rows + size(rows)
-      deallocate(value)
+      deallocate(x, value, velocity_scale)
       call fluidbed_destroy(law)
     end do
   end subroutine
@@ -1057,26 +1064,29 @@ contains
     lebowitz = .false.
     syamlal = .false.
     do i = 1, fluidbed_closure_count()
-      lebowitz = lebowitz .or. fluidbed_closure_name_at(i) == 'Lebowitz'
-      syamlal = syamlal .or. fluidbed_closure_name_at(i) == 'SyamlalSolidSolidDrag'
+      ! (no impure function in a .or./.and. operand gfortran may skip: -Wfunction-elimination at -O)
+      if (fluidbed_closure_name_at(i) == 'Lebowitz') lebowitz = .true.
+      if (fluidbed_closure_name_at(i) == 'SyamlalSolidSolidDrag') syamlal = .true.
     end do
     call check(fluidbed_closure_count() > 50 .and. lebowitz .and. syamlal, 'the catalogue')
-    call check(fluidbed_closure_name_at(fluidbed_closure_count() + 1) == '' .and. fluidbed_closure_name_at(0) == '', &
-               'no name beyond the catalogue')
+    call check(fluidbed_closure_name_at(fluidbed_closure_count() + 1) == '', 'no name beyond the catalogue')
+    call check(fluidbed_closure_name_at(0) == '', 'no name before the catalogue')
     do i = 0, FLUIDBED_FAMILY_COUNT - 1
-      call check(len(fluidbed_family_what(i)) > 0 .and. len(fluidbed_family_convention(i)) > 0, 'a family''s texts')
+      call check(len(fluidbed_family_what(i)) > 0, 'a family''s what')
+      call check(len(fluidbed_family_convention(i)) > 0, 'a family''s convention')
     end do
     call check(fluidbed_family_what(FLUIDBED_FAMILY_COUNT) == '', 'no family beyond the last')
     call check(fluidbed_status_name(FLUIDBED_DOMAIN_ERROR) == 'FLUIDBED_DOMAIN_ERROR', 'a status name')
     law = created('ModifiedMansoori', 'max_packing', 0.6_c_double)
     call check(fluidbed_family(law) == FLUIDBED_FAMILY_MIXTURE_RADIAL_DISTRIBUTION, 'the family of ModifiedMansoori')
     call check(len(fluidbed_reference(law)) > 20, 'a reference: ' // fluidbed_reference(law))
-    call check(has_parameter(law, 'max_packing') .and. fluidbed_parameter_name(law, 0) == '' .and. &
-               fluidbed_parameter_name(law, fluidbed_parameter_count(law) + 1) == '', 'the parameters')
+    call check(has_parameter(law, 'max_packing'), 'the parameters')
+    call check(fluidbed_parameter_name(law, 0) == '', 'no parameter 0')
+    call check(fluidbed_parameter_name(law, fluidbed_parameter_count(law) + 1) == '', 'no parameter beyond the last')
     copy = fluidbed_copy(law)
     status = fluidbed_get_parameter(copy, 'max_packing', value)
-    call check(status == FLUIDBED_OK .and. same_bits(value, 0.6_c_double) .and. &
-               fluidbed_name(copy) == 'ModifiedMansoori', 'a copy keeps the parameters')
+    call check(status == FLUIDBED_OK .and. same_bits(value, 0.6_c_double), 'a copy keeps the parameters')
+    call check(fluidbed_name(copy) == 'ModifiedMansoori', 'a copy keeps the name')
     call fluidbed_destroy(copy)
     call fluidbed_destroy(law)
     law = created('SyamlalSolidSolidDrag')
