@@ -1,5 +1,6 @@
 ! The Fortran module (bindings/fortran/fluidbed.f90) beyond drag, against independent values,
-! ctest fortran.kinetic_theory_moments:
+! ctest fortran.kinetic_theory_moments (the constitutive and mixture rows also bit for bit with the
+! C functions called directly on the same arrays):
 !  - every radial distribution row and every one-class law row of tests/reference/ktgf_reference.csv
 !    (mpmath; the tables' names mapped as tests/kinetic_theory_table_names.hpp does), value within
 !    1e-13 and slopes within 1e-12 (relative, the C++ tests' scales), over arrays of cells;
@@ -34,10 +35,31 @@
 !    message naming the argument), an unknown name, closures of the wrong family, bad options.
 ! Usage: fluidbed_fortran_kinetic_theory_moments PATH/TO/tests/reference
 program kinetic_theory_moments
-  use, intrinsic :: iso_c_binding, only: c_double, c_int
+  use, intrinsic :: iso_c_binding, only: c_double, c_int, c_size_t, c_ptr, c_null_ptr
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
   use fluidbed
   implicit none
+  ! Two C functions themselves, called on the same arrays to show that the wrappers return their
+  ! bits (the wrappers pass the arrays' addresses; fortran.drag_table shows the same for drag).
+  interface
+    integer(c_int) function c_constitutive(law, radial, n, phi, theta, d, rho, e, value, d_phi, d_theta, error) &
+        bind(C, name='fluidbed_constitutive')
+      import :: c_int, c_size_t, c_double, c_ptr
+      type(c_ptr), value :: law, radial, error
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: phi(*), theta(*), d(*), rho(*), e(*)
+      real(c_double), intent(out) :: value(*), d_phi(*), d_theta(*)
+    end function
+    integer(c_int) function c_mixture_radial_distribution(law, n, classes, i, k, fractions, diameters, g, &
+                                                          d_fractions, error) &
+        bind(C, name='fluidbed_mixture_radial_distribution')
+      import :: c_int, c_size_t, c_double, c_ptr
+      type(c_ptr), value :: law, error
+      integer(c_size_t), value :: n, classes, i, k
+      real(c_double), intent(in) :: fractions(*), diameters(*)
+      real(c_double), intent(out) :: g(*), d_fractions(*)
+    end function
+  end interface
   integer, parameter :: field = 40, key_length = 8 * (field + 1)
   ! A CSV table: its header's names and its cells as text, cells(column, row).
   type :: table
@@ -368,7 +390,8 @@ contains
     type(table), intent(in) :: t
     integer, intent(in) :: rows(:)
     type(fluidbed_closure) :: law, radial
-    real(c_double), dimension(size(rows)) :: phi, theta, d, rho, e, value, d_phi, d_theta
+    real(c_double), dimension(size(rows)) :: phi, theta, d, rho, e, value, d_phi, d_theta, c_value, c_d_phi, &
+                                             c_d_theta
     real(c_double) :: expected
     character(len=:), allocatable :: message, variant, name
     integer :: status, c, colon
@@ -393,6 +416,10 @@ contains
     end do
     status = fluidbed_constitutive(law, radial, phi, theta, d, rho, e, value, d_phi, d_theta, message)
     call check(status == FLUIDBED_OK, name // ': ' // message)
+    status = c_constitutive(law%handle, radial%handle, size(rows, kind=c_size_t), phi, theta, d, rho, e, c_value, &
+                            c_d_phi, c_d_theta, c_null_ptr)
+    call check(status == FLUIDBED_OK .and. all(same_bits(value, c_value)) .and. all(same_bits(d_phi, c_d_phi)) .and. &
+               all(same_bits(d_theta, c_d_theta)), name // ': the wrapper returns the C function''s bits')
     do c = 1, size(rows)
       expected = number(t, rows(c), 'value')
       call check(relative_difference(value(c), expected) < 1e-13_c_double, name // ' ' // variant // ': value')
@@ -437,8 +464,8 @@ contains
     type(table), intent(in) :: t
     integer, intent(in) :: rows(:)
     type(fluidbed_closure) :: rdf, drag
-    real(c_double), allocatable :: fractions(:, :), diameters(:, :), d_fractions(:, :)
-    real(c_double), dimension(size(rows)) :: g, rho_i, rho_k, e, w, k_ik, d_phi_p, d_phi_q, d_g, d_w
+    real(c_double), allocatable :: fractions(:, :), diameters(:, :), d_fractions(:, :), c_d_fractions(:, :)
+    real(c_double), dimension(size(rows)) :: g, rho_i, rho_k, e, w, k_ik, d_phi_p, d_phi_q, d_g, d_w, c_g
     real(c_double) :: expected, derivative
     character(len=:), allocatable :: message, what, variant, rdf_table, name
     integer :: status, classes, i, k, c, m, colon, n
@@ -451,7 +478,7 @@ contains
     classes = nint(number(t, rows(1), 'classes'))
     i = nint(number(t, rows(1), 'i')) + 1  ! 1-based, as the wrapper takes them
     k = nint(number(t, rows(1), 'k')) + 1
-    allocate(fractions(n, classes), diameters(n, classes), d_fractions(n, classes))
+    allocate(fractions(n, classes), diameters(n, classes), d_fractions(n, classes), c_d_fractions(n, classes))
     do m = 1, classes
       digit = achar(iachar('0') + m)
       do c = 1, n
@@ -467,6 +494,10 @@ contains
     end if
     status = fluidbed_mixture_radial_distribution(rdf, i, k, fractions, diameters, g, d_fractions, message)
     call check(status == FLUIDBED_OK, name // ': ' // message)
+    status = c_mixture_radial_distribution(rdf%handle, int(n, c_size_t), int(classes, c_size_t), int(i - 1, c_size_t), &
+                                           int(k - 1, c_size_t), fractions, diameters, c_g, c_d_fractions, c_null_ptr)
+    call check(status == FLUIDBED_OK .and. all(same_bits(g, c_g)) .and. all(same_bits(d_fractions, c_d_fractions)), &
+               name // ': the wrapper returns the C function''s bits')
     if (what == 'radial_distribution') then
       do c = 1, n
         expected = number(t, rows(c), 'value')
