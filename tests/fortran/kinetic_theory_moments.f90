@@ -241,6 +241,18 @@ contains
     read(t%cells(column(t, name), row), *) number
   end function
 
+  ! The column `name` of the rows `rows`, as numbers.
+  function numbers(t, rows, name) result(values)
+    type(table), intent(in) :: t
+    integer, intent(in) :: rows(:)
+    character(len=*), intent(in) :: name
+    real(c_double) :: values(size(rows))
+    integer :: c
+    do c = 1, size(rows)
+      values(c) = number(t, rows(c), name)
+    end do
+  end function
+
   ! Each row's key: the texts of the named columns (up to 8), joined.
   function keys_of(t, columns) result(keys)
     type(table), intent(in) :: t
@@ -371,9 +383,7 @@ contains
       status = fluidbed_set_parameter(law, 'max_packing', number(t, rows(1), 'extra'), message)
       call check(status == FLUIDBED_OK, name // ' max_packing: ' // message)
     end if
-    do c = 1, size(rows)
-      phi(c) = number(t, rows(c), 'solid_fraction')
-    end do
+    phi = numbers(t, rows, 'solid_fraction')
     status = fluidbed_of_solid_fraction(law, phi, value, slope, message)
     call check(status == FLUIDBED_OK, name // ': ' // message)
     do c = 1, size(rows)
@@ -407,13 +417,11 @@ contains
       call check(status == FLUIDBED_OK, name // ': ' // message)
     end if
     radial = table_radial(variant(colon + 1:))
-    do c = 1, size(rows)
-      phi(c) = number(t, rows(c), 'solid_fraction')
-      theta(c) = number(t, rows(c), 'granular_temperature')
-      d(c) = number(t, rows(c), 'diameter')
-      rho(c) = number(t, rows(c), 'particle_density')
-      e(c) = number(t, rows(c), 'restitution')
-    end do
+    phi = numbers(t, rows, 'solid_fraction')
+    theta = numbers(t, rows, 'granular_temperature')
+    d = numbers(t, rows, 'diameter')
+    rho = numbers(t, rows, 'particle_density')
+    e = numbers(t, rows, 'restitution')
     status = fluidbed_constitutive(law, radial, phi, theta, d, rho, e, value, d_phi, d_theta, message)
     call check(status == FLUIDBED_OK, name // ': ' // message)
     status = c_constitutive(law%handle, radial%handle, size(rows, kind=c_size_t), phi, theta, d, rho, e, c_value, &
@@ -513,12 +521,10 @@ contains
     else
       call check(what == 'solid_solid_drag' .and. variant(1:colon - 1) == 'syamlal', 'a Syamlal drag row')
       drag = created('SyamlalSolidSolidDrag', 'friction_coefficient', number(t, rows(1), 'friction_coefficient'))
-      do c = 1, n
-        rho_i(c) = number(t, rows(c), 'rho_i')
-        rho_k(c) = number(t, rows(c), 'rho_k')
-        e(c) = number(t, rows(c), 'restitution')
-        w(c) = number(t, rows(c), 'relative_speed')
-      end do
+      rho_i = numbers(t, rows, 'rho_i')
+      rho_k = numbers(t, rows, 'rho_k')
+      e = numbers(t, rows, 'restitution')
+      w = numbers(t, rows, 'relative_speed')
       status = fluidbed_solid_solid_drag(drag, fractions(:, i), fractions(:, k), rho_i, diameters(:, i), rho_k, &
                                          diameters(:, k), e, g, w, k_ik, d_phi_p, d_phi_q, d_g, d_w, message)
       call check(status == FLUIDBED_OK, 'SyamlalSolidSolidDrag: ' // message)
@@ -574,16 +580,14 @@ contains
     character(len=:), allocatable :: message, variant
     integer :: status, c
     variant = text(t, rows(1), 'variant')
-    do c = 1, size(rows)
-      phi(c) = number(t, rows(c), 'solid_fraction')
-      theta(c) = number(t, rows(c), 'granular_temperature')
-      slip(c) = number(t, rows(c), 'slip')
-      beta(c) = number(t, rows(c), 'beta')
-      mu(c) = number(t, rows(c), 'gas_viscosity')
-      d(c) = number(t, rows(c), 'diameter')
-      rho(c) = number(t, rows(c), 'particle_density')
-      e(c) = number(t, rows(c), 'restitution')
-    end do
+    phi = numbers(t, rows, 'solid_fraction')
+    theta = numbers(t, rows, 'granular_temperature')
+    slip = numbers(t, rows, 'slip')
+    beta = numbers(t, rows, 'beta')
+    mu = numbers(t, rows, 'gas_viscosity')
+    d = numbers(t, rows, 'diameter')
+    rho = numbers(t, rows, 'particle_density')
+    e = numbers(t, rows, 'restitution')
     ! Each source with only its own arguments.
     if (variant == 'drag') then
       law = created('DragFluctuationSource')
@@ -774,13 +778,11 @@ contains
     integer :: status, c
     what = text(t, rows(1), 'function')
     variant = text(t, rows(1), 'variant')
-    do c = 1, size(rows)
-      phi(c) = number(t, rows(c), 'solid_fraction')
-      theta(c) = number(t, rows(c), 'granular_temperature')
-      d(c) = number(t, rows(c), 'diameter')
-      divergence(c) = number(t, rows(c), 'divergence')
-      contraction(c) = number(t, rows(c), 'deviatoric_contraction')
-    end do
+    phi = numbers(t, rows, 'solid_fraction')
+    theta = numbers(t, rows, 'granular_temperature')
+    d = numbers(t, rows, 'diameter')
+    divergence = numbers(t, rows, 'divergence')
+    contraction = numbers(t, rows, 'deviatoric_contraction')
     if (variant == 'srivastava_sundaresan') then
       name = 'SrivastavaSundaresan'
       law = created(name)
