@@ -10,14 +10,14 @@ program drag_table
   use, intrinsic :: iso_c_binding, only: c_double, c_size_t, c_int, c_loc
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use fluidbed
+  use fortran_checks
   implicit none
   integer, parameter :: max_rows = 4000
   character(len=64) :: law_of(max_rows)
   real(c_double) :: cells(8, max_rows)  ! voidage, slip, density, viscosity, diameter, Re, beta_cl, beta_pg
-  integer :: rows, failures, first, last
+  integer :: rows, first, last
   character(len=1024) :: path
 
-  failures = 0
   call get_command_argument(1, path)
   call read_table(trim(path))
   first = 1
@@ -31,23 +31,13 @@ program drag_table
     first = last + 1
   end do
   call check_bad_input()
-  if (failures == 0) then
-    print '(a, i0, a)', 'fortran: ', rows, ' drag reference rows, both conventions: all checks passed'
-  else
-    print '(a, i0, a)', 'fortran: ', failures, ' checks FAILED'
-    error stop 1
-  end if
+  block
+    character(len=96) :: passed
+    write(passed, '(a, i0, a)') 'fortran: ', rows, ' drag reference rows, both conventions: all checks passed'
+    call finish(trim(passed))
+  end block
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      failures = failures + 1
-      if (failures <= 20) print '(2a)', 'FAILED: ', what
-    end if
-  end subroutine
 
   subroutine read_table(file)
     character(len=*), intent(in) :: file
@@ -112,11 +102,6 @@ contains
     status = fluidbed_c_drag(law%handle, int(convention, c_int), int(size(beta), c_size_t), columns(:, 1), &
                              columns(:, 2), columns(:, 3), columns(:, 4), columns(:, 5), beta, &
                              c_loc(d_voidage(1)), c_loc(d_slip(1)), c_loc(d_force(1)), error)
-  end function
-
-  elemental logical function same_bits(a, b)
-    real(c_double), intent(in) :: a, b
-    same_bits = transfer(a, 0_8) == transfer(b, 0_8)
   end function
 
   subroutine check_bad_input()

@@ -38,6 +38,7 @@ program kinetic_theory_moments
   use, intrinsic :: iso_c_binding, only: c_double, c_int, c_size_t, c_ptr, c_null_ptr
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
   use fluidbed
+  use fortran_checks
   implicit none
   ! Two C functions themselves, called on the same arrays to show that the wrappers return their
   ! bits (the wrappers pass the arrays' addresses; fortran.drag_table shows the same for drag).
@@ -102,11 +103,10 @@ program kinetic_theory_moments
   real(c_double), parameter :: pi = 3.14159265358979323846264338327950288_c_double
   real(c_double), parameter :: zero = 0
   character(len=1024) :: directory
-  integer :: failures, radial_rows, law_rows, mixture_rows, solid_drag_rows, exchange_rows, sphere_drag_rows, &
+  integer :: radial_rows, law_rows, mixture_rows, solid_drag_rows, exchange_rows, sphere_drag_rows, &
              settling_rows, friction_rows, elastic_rows, moment_rules
   real(c_double) :: nan
 
-  failures = 0
   nan = ieee_value(zero, ieee_quiet_nan)
   call get_command_argument(1, directory)
   call check_one_class(trim(directory) // '/ktgf_reference.csv')
@@ -130,23 +130,9 @@ program kinetic_theory_moments
              exchange_rows == 72 .and. sphere_drag_rows == 30 .and. settling_rows == 96 .and. &
              friction_rows == 1253 .and. elastic_rows == 75 .and. moment_rules == 215, &
              'every row of the tables compared')
-  if (failures == 0) then
-    print '(a)', 'fortran: kinetic theory and moments: all checks passed'
-  else
-    print '(a, i0, a)', 'fortran: ', failures, ' checks FAILED'
-    error stop 1
-  end if
+  call finish('fortran: kinetic theory and moments: all checks passed')
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      failures = failures + 1
-      if (failures <= 20) print '(2a)', 'FAILED: ', what
-    end if
-  end subroutine
 
   ! |a − b|/|b|, 0 when a = b (±∞ included); NaN gives NaN.
   elemental real(c_double) function relative_difference(a, b)
@@ -978,11 +964,6 @@ contains
     call check(code == FLUIDBED_DOMAIN_ERROR, 'correct: protected_moments = 0 is a domain error')
     print '(2a)', 'options: ', message
   end subroutine
-
-  elemental logical function same_bits(a, b)
-    real(c_double), intent(in) :: a, b
-    same_bits = transfer(a, 0_8) == transfer(b, 0_8)
-  end function
 
   ! ---- The moments reference table --------------------------------------------------------------------
 
