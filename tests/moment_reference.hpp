@@ -32,6 +32,13 @@ class MomentReference {
   bool has(const std::string& name, int n_nodes, const std::string& quantity) const {
     return values_.count({name, n_nodes, quantity}) == 1;
   }
+  // Every case's moments m_0 … m_{L−1}, by case.
+  std::map<std::string, std::vector<double>> moment_sets() const {
+    std::map<std::string, std::vector<double>> out;
+    for (const auto& entry : values_)
+      if (std::get<2>(entry.first) == "moment") out.emplace(std::get<0>(entry.first), entry.second);
+    return out;
+  }
   // Every (case, node count) that has a rule (node rows), in order.
   std::vector<std::pair<std::string, int>> rules() const {
     std::vector<std::pair<std::string, int>> out;

@@ -27,6 +27,7 @@
 #include "fluidbed/registries.hpp"
 #include "fluidbed_c.h"
 #include "kinetic_theory_table_names.hpp"
+#include "moment_reference.hpp"
 #include "reference_table.hpp"
 
 namespace {
@@ -370,15 +371,7 @@ TEST_CASE("C interface: every one-class kinetic-theory reference row bit for bit
 }
 
 TEST_CASE("C interface: every moment set of the moments reference table, 1 to 8 nodes, bit for bit with invert_batched") {
-  const test::ReferenceTable table("moments_reference.csv");
-  std::map<std::string, std::vector<double>> sets;  // the moments of each case, in index order
-  for (std::size_t row = 0; row < table.size(); ++row)
-    if (table.text(row, "quantity") == "moment") {
-      std::vector<double>& m = sets[table.text(row, "case")];
-      const auto k = static_cast<std::size_t>(table.number(row, "index"));
-      if (m.size() <= k) m.resize(k + 1);
-      m[k] = table.number(row, "value");
-    }
+  const auto sets = test::MomentReference::instance().moment_sets();  // the moments of each case
   REQUIRE(sets.size() > 10);
   std::size_t compared = 0;
   const auto compare = [&]<int N>(std::integral_constant<int, N>, fluidbed_support support) {
@@ -655,15 +648,7 @@ TEST_CASE("C interface: the gas exchange sources on every source row of the exch
 }
 
 TEST_CASE("C interface: realizability and correction of the moments reference sets and corrupted copies, bit for bit") {
-  const test::ReferenceTable table("moments_reference.csv");
-  std::map<std::string, std::vector<double>> sets;
-  for (std::size_t row = 0; row < table.size(); ++row)
-    if (table.text(row, "quantity") == "moment") {
-      std::vector<double>& m = sets[table.text(row, "case")];
-      const auto k = static_cast<std::size_t>(table.number(row, "index"));
-      if (m.size() <= k) m.resize(k + 1);
-      m[k] = table.number(row, "value");
-    }
+  const auto sets = test::MomentReference::instance().moment_sets();  // the moments of each case
   // Each set, and copies with one moment k >= 1 multiplied by 1.3 or 0.6 (advection's corruption).
   std::vector<std::vector<double>> all;
   for (const auto& [name, m] : sets) {
