@@ -13,9 +13,11 @@
 #include <limits>
 #include <random>
 #include <span>
+#include <vector>
 
 #include "fluidbed/core/vector3.hpp"
 #include "fluidbed/moments/dqmom.hpp"
+#include "fluidbed/moments/dqmom_batched.hpp"
 #include "fluidbed/moments/dqmom_orders.hpp"
 
 using namespace fluidbed::moments;
@@ -341,4 +343,59 @@ TEST_CASE("DQMOM state from moments (a 3-atom measure) and nodes of vanishing we
   CHECK(nodes[1] == 103e-6);
   CHECK(relative(nodes[0], xi[0]) < 1e-10);
   CHECK(relative(nodes[2], xi[2]) < 1e-10);
+}
+
+TEST_CASE("DQMOM batched: every cell as the per-cell System (within 8 eps condition), merged and invalid cells included") {
+  constexpr int n = 4, count = 203;  // not a multiple of the lanes
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0, 1), sign(-1, 1);
+  std::vector<std::vector<double>> nodes(n, std::vector<double>(count)), weights(n, std::vector<double>(count)),
+      s(2 * n, std::vector<double>(count)), a(n, std::vector<double>(count)), b(n, std::vector<double>(count));
+  std::vector<dqmom::SourceStatus> status(count);
+  std::vector<double> condition(count);
+  for (int c = 0; c < count; ++c) {
+    for (int i = 0; i < n; ++i) nodes[i][c] = 20e-6 * std::pow(100.0, unit(random)), weights[i][c] = unit(random);
+    if (c % 17 == 3) nodes[2][c] = nodes[1][c] * (1 + 1e-9);  // merged
+    if (c % 29 == 5) nodes[0][c] = -nodes[0][c];             // invalid
+    for (int k = 0; k < 2 * n; ++k) s[k][c] = sign(random) * std::pow(300e-6, k);
+  }
+  dqmom::SourceBatch<double, n> batch;
+  for (int i = 0; i < n; ++i) {
+    batch.nodes[i] = nodes[i];
+    batch.weights[i] = weights[i];
+    batch.weight_sources[i] = a[i];
+    batch.weighted_node_sources[i] = b[i];
+  }
+  for (int k = 0; k < 2 * n; ++k) batch.moment_sources[k] = s[k];
+  batch.status = status;
+  batch.condition = condition;
+  dqmom::solve_batched(batch);
+  int merged = 0, invalid = 0;
+  for (int c = 0; c < count; ++c) {
+    INFO("cell " << c);
+    std::array<double, n> x{}, w{};
+    std::array<double, 2 * n> sc{};
+    for (int i = 0; i < n; ++i) x[i] = nodes[i][c], w[i] = weights[i][c];
+    for (int k = 0; k < 2 * n; ++k) sc[k] = s[k][c];
+    const auto one = dqmom::solve<double, n>(std::span<const double>(x), std::span<const double>(w), std::span<const double>(sc));
+    REQUIRE(status[c] == one.status);
+    merged += one.status == dqmom::SourceStatus::merged_nodes;
+    invalid += one.status == dqmom::SourceStatus::invalid_input;
+    if (one.status == dqmom::SourceStatus::invalid_input) continue;
+    CHECK(relative(condition[c], one.condition) < 1e-12);
+    double largest_a = 0, largest_b = 0;
+    for (int i = 0; i < n; ++i) largest_a = std::max(largest_a, std::abs(one.weight[i])), largest_b = std::max(largest_b, std::abs(one.weighted_node[i]));
+    for (int i = 0; i < n; ++i) {
+      CHECK(std::abs(a[i][c] - one.weight[i]) <= 8 * eps * one.condition * largest_a);
+      CHECK(std::abs(b[i][c] - one.weighted_node[i]) <= 8 * eps * one.condition * largest_b);
+    }
+  }
+  CHECK(merged == 12);
+  CHECK(invalid == 7);
+  // Without the condition field the sources are the same.
+  std::vector<std::vector<double>> a2 = a;
+  for (int i = 0; i < n; ++i) batch.weight_sources[i] = a2[i];
+  batch.condition = {};
+  dqmom::solve_batched(batch);
+  CHECK(a2 == a);
 }

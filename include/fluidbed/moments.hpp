@@ -10,6 +10,7 @@
 #include "moments/batched.hpp"
 #include "moments/correction.hpp"
 #include "moments/dqmom.hpp"
+#include "moments/dqmom_batched.hpp"
 #include "moments/dqmom_orders.hpp"
 #include "moments/eigen_backend.hpp"
 #include "moments/inversion.hpp"

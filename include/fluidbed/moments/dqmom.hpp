@@ -51,10 +51,13 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include "../core/config.hpp"
 #include "inversion.hpp"
@@ -118,11 +121,33 @@ FLUIDBED_HOST_DEVICE Jet<T> lagrange_jet(const std::array<T, N>& x, int n, int i
   return p;
 }
 
+// A power of two within a factor 2 of x > 0 (x's exponent: the scale costs no rounding). For
+// float and double by masking the bits, which vectorises; frexp otherwise.
 template <class T>
 FLUIDBED_HOST_DEVICE T power_of_two_near(const T& x) {
-  int exponent = 0;
-  (void)std::frexp(x, &exponent);
-  return std::ldexp(T(1), exponent);
+  if constexpr (std::is_same_v<T, double>) {
+    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) & 0x7ff0000000000000ull);
+  } else if constexpr (std::is_same_v<T, float>) {
+    return std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) & 0x7f800000u);
+  } else {
+    int exponent = 0;
+    (void)std::frexp(x, &exponent);
+    return std::ldexp(T(1), exponent);
+  }
+}
+
+// The default merge gap (1000 ε)^(1/3), by Newton's iteration at compile time.
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr T default_merge_gap() {
+  const double target = 1000 * double(std::numeric_limits<T>::epsilon());
+  double root = 1e-3;
+  for (int i = 0; i < 60; ++i) root -= (root * root * root - target) / (3 * root * root);
+  return T(root);
+}
+
+template <class T>
+FLUIDBED_HOST_DEVICE T merge_gap(const Options& options) {
+  return options.merge_gap < 0 ? default_merge_gap<T>() : T(options.merge_gap);
 }
 
 }  // namespace detail
@@ -152,7 +177,7 @@ struct MergedNodes {
     size = n;
     scale = power_of_two_near(largest);
     for (int i = 0; i < n; ++i) node[i] = nodes[i] / scale, weight[i] = weights[i];
-    merge(options.merge_gap < 0 ? T(std::cbrt(1000 * double(std::numeric_limits<T>::epsilon()))) : T(options.merge_gap));
+    merge(merge_gap<T>(options));
   }
 
   // Groups nodes whose sorted neighbours are within the relative gap; each group's centre is its
