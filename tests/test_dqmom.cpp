@@ -399,3 +399,47 @@ TEST_CASE("DQMOM batched: every cell as the per-cell System (within 8 eps condit
   dqmom::solve_batched(batch);
   CHECK(a2 == a);
 }
+
+TEST_CASE("DQMOM conventions: number-density sources as volume-fraction sources (seed 001 eqs 77-78 corrected); seed 001's printed rows") {
+  const int n = 3;
+  const auto xi = first<double>(sizes, n);
+  const double shape = M_PI / 6;
+  const std::array<double, 3> w{1e9, 3e8, 2e7}, g{1e-7, -2e-7, 3e-7};  // number densities [m^-3], growth [m/s]
+  std::array<double, 3> phi{};
+  for (int i = 0; i < n; ++i) phi[i] = shape * std::pow(xi[i], 3) * w[i];
+  const dqmom::System<double, 3> number_system{xi, std::span<const double>(w)};
+  const auto number_terms = dqmom::growth_terms<double, 3>(dqmom::Weights::number_density, std::span<const double>(w), xi,
+                                                           std::span<const double>(g));
+  const auto number = number_system.solve(std::span<const dqmom::PointSource<double>>(number_terms));
+  const auto volume = dqmom::volume_sources_from_number(number, xi, shape);
+  for (int i = 0; i < n; ++i) {
+    CHECK(relative(volume.weight[i], 3 * phi[i] * g[i] / xi[i]) < 1e-14);
+    CHECK(relative(volume.weighted_node[i], 4 * phi[i] * g[i]) < 1e-14);
+  }
+  // Any number sources: the chain rule by a small step of w and wξ, against the printed eq. 77,
+  // which has the volume fraction where the weight's source c^w belongs.
+  dqmom::Sources<double, 3> any;
+  any.size = n;
+  for (int i = 0; i < n; ++i) any.weight[i] = 1e7 * (i + 1), any.weighted_node[i] = 2e3 * (2 - i);
+  const auto converted = dqmom::volume_sources_from_number(any, xi, shape);
+  const double dt = 1e-6;
+  for (int i = 0; i < n; ++i) {
+    const double w1 = w[i] + dt * any.weight[i], wx1 = w[i] * xi[i] + dt * any.weighted_node[i];
+    const double phi1 = shape * std::pow(wx1, 3) / (w1 * w1), phi_x1 = shape * std::pow(wx1, 4) / std::pow(w1, 3);
+    CHECK(relative(converted.weight[i], (phi1 - phi[i]) / dt) < 1e-5);
+    CHECK(relative(converted.weighted_node[i], (phi_x1 - phi[i] * xi[i]) / dt) < 1e-5);
+    const double printed = shape * (3 * xi[i] * xi[i] * any.weighted_node[i] - 2 * std::pow(xi[i], 3) * phi[i]);
+    CHECK(relative(printed, (phi1 - phi[i]) / dt) > 1e-2);
+  }
+  // Random sources: Niemi's printed rows (k = 2 of the c^ξ block as 2ξ², the last c^a row with
+  // the opposite sign) do not reproduce the moment sources the correct rows do.
+  const std::array<double, 6> s{1e-3, 2e-7, 3e-11, 5e-15, -1e-18, 2e-22};
+  const auto c = dqmom::solve<double, 3>(xi, std::span<const double>(w), std::span<const double>(s));
+  double printed_k2 = 0, printed_last = 0;
+  for (int i = 0; i < n; ++i) {
+    printed_k2 += -xi[i] * xi[i] * c.weight[i] + 2 * xi[i] * xi[i] * c.weighted_node[i];
+    printed_last += -2.0 * (1 - n) * std::pow(xi[i], 5) * c.weight[i] + 5 * std::pow(xi[i], 4) * c.weighted_node[i];
+  }
+  CHECK(relative(printed_k2, s[2]) > 1e-3);
+  CHECK(relative(printed_last, s[5]) > 1e-3);
+}

@@ -3,7 +3,7 @@
 // initialisation from moments).
 //
 // DQMOM (Marchisio & Fox (2005), J. Aerosol Sci. 36, 43–73, doi:10.1016/j.jaerosci.2004.07.009;
-// Mazzei (2008), PhD thesis, UCL, §5.7 and App. D) transports the ν weights a_i and weighted nodes
+// Mazzei (2008), PhD thesis, UCL (seed 000), §5.7 and App. D) transports the ν weights a_i and weighted nodes
 // a_i ξ_i of a quadrature, with sources c_i^a and c_i^ξ chosen so that 2ν moments
 // M_k = Σ a_i ξ_i^k evolve as the population balance says:
 //   Σ_i (1 − k) ξ_i^k c_i^a + k ξ_i^(k−1) c_i^ξ = s_k,   k = 0 … 2ν − 1          (thesis eq. 5.63)
@@ -11,7 +11,10 @@
 // diameter ξ) or number densities w_i (Marchisio & Fox). The matrix X of this system is the same
 // for both; the growth part of the right-hand side is not (Weights below), and the two must never
 // be mixed. The thesis prints the k = 3 row of the two-node matrix (eq. D.8) as −2ξ_i² where
-// (1 − k)ξ^k gives −2ξ_i³; its solution (D.9–D.17) is right (tested).
+// (1 − k)ξ^k gives −2ξ_i³; its solution (D.9–D.17) is right (tested). Niemi (2012, seed 001)
+// prints the general matrix (eqs 71–72) with the k = 2 row of the c^ξ block as 2ξ_i² (it is
+// 2ξ_i, k ξ^(k−1)) and the last row of the c^a block as −2(1 − ν)ξ^(2ν−1) (it is
+// (1 − k)ξ^k = 2(1 − ν)ξ^(2ν−1) at k = 2ν − 1); both printed rows are tested not to hold.
 //
 // Structured solve. With α_i = c_i^a and β_i = c_i^ξ − ξ_i c_i^a the rows read L(x^k) = s_k for
 // the functional L(p) = Σ_i α_i p(ξ_i) + β_i p'(ξ_i): (α, β) are the Hermite weights of L at the
@@ -373,6 +376,24 @@ FLUIDBED_HOST_DEVICE Sources<T, N> solve(std::span<const T> nodes, std::span<con
   return System<T, N>(nodes, std::span<const T>(equal.data(), n), options).solve(s);
 }
 
+// Number-density sources (c^w, c^ξ of w_i and w_i ξ_i) as the sources of the volume fraction
+// φ_i = k_v ξ_i³ w_i and of φ_i ξ_i, for a diameter ξ (k_v = π/6 for spheres):
+//   c^φ = k_v (3 ξ² c^ξ − 2 ξ³ c^w),   c^{φξ} = k_v (4 ξ³ c^ξ − 3 ξ⁴ c^w)
+// (Niemi (2012), MSc thesis, Aalto University (seed 001), eqs 77–78, which print the last terms
+// with the volume fraction α_q where the weight's source a_q belongs: from φ = k_v (wξ)³/w² by the
+// chain rule; tested through the growth identities of the two forms).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Sources<T, N> volume_sources_from_number(const Sources<T, N>& number, std::span<const T> nodes,
+                                                              const T& shape_factor) {
+  Sources<T, N> out = number;
+  for (int i = 0; i < number.size && i < int(nodes.size()); ++i) {
+    const T x = nodes[i], x2 = x * x, x3 = x2 * x;
+    out.weight[i] = shape_factor * (T(3) * x2 * number.weighted_node[i] - T(2) * x3 * number.weight[i]);
+    out.weighted_node[i] = shape_factor * (T(4) * x3 * number.weighted_node[i] - T(3) * x3 * x * number.weight[i]);
+  }
+  return out;
+}
+
 // ---- Right-hand sides --------------------------------------------------------------------------
 
 // Growth at rates ξ̇_i = growth_rate[i] [m/s] as point functionals: the thesis's
@@ -457,8 +478,8 @@ FLUIDBED_HOST_DEVICE constexpr T upwind_numerical_diffusivity(const T& speed, co
 // ---- Moment transport on a quadrature ----------------------------------------------------------
 
 // The coefficients p_kr = a_r ξ_r^k / Σ_s a_s ξ_s^k of the moment-specific velocity
-// v̂_k = Σ_r p_kr v_r of moment order k (Mazzei, Marchisio & Lettieri (2010) AIChE J. 56, 2573–2588,
-// doi:10.1002/aic.12181, their eqs 8–10; thesis eqs 5.97–5.99): Σ_r p_kr = 1, so that the host
+// v̂_k = Σ_r p_kr v_r of moment order k (Mazzei, Marchisio & Lettieri (2012) AIChE J. 58,
+// 3054–3069, doi:10.1002/aic.13714 (seed 003), eqs 0.8–0.10; thesis eqs 5.97–5.99): Σ_r p_kr = 1, so that the host
 // forms v̂_k from the class velocities of any vector type. For a moment with no mass
 // (Σ a_r ξ_r^k = 0) they are the weight fractions a_r/Σa_s, and all zero without any weight.
 template <class T, int N>
@@ -491,7 +512,8 @@ FLUIDBED_HOST_DEVICE T moment_velocity(std::span<const T> weights, std::span<con
 // normal_velocity[r] = v_r · n, node by node upwind: Σ_r a_r ξ_r^k (v_r·n) taken from the
 // `upstream` side of each node (upwind_side[r] = the quadrature whose node r flows in). Node-wise
 // upwinding keeps a moment set realizable for Courant numbers <= 1, which per-moment upwinding
-// with v̂_k does not (Desjardins, Fox & Villedieu (2008) J. Comput. Phys. 227, 2514–2539).
+// with v̂_k does not (Desjardins, Fox & Villedieu (2008) J. Comput. Phys. 227, 2514–2539,
+// doi:10.1016/j.jcp.2007.10.026).
 template <class T>
 FLUIDBED_HOST_DEVICE T upwind_moment_flux(std::span<const T> left_weights, std::span<const T> left_nodes,
                                           std::span<const T> right_weights, std::span<const T> right_nodes,
