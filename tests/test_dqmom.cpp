@@ -1,4 +1,4 @@
-// DQMOM (moments/dqmom.hpp, dqmom_orders.hpp): exact identities of the source system (Mazzei 2008
+// DQMOM (moments/dqmom.hpp, dqmom_batched.hpp): exact identities of the source system (Mazzei 2008
 // thesis eq. 5.63): pure growth for every ν in both weight conventions, det X, the two-node closed
 // forms of App. D (D.14–D.17, with the −2ξ³ row the thesis misprints as −2ξ²), the two-node
 // diffusion sources of eq. 6.22, the recovery of random sources within the reported conditioning,
@@ -6,6 +6,8 @@
 // and the transport pieces (moment velocities, upwind fluxes, initialisation from moments, nodes
 // of vanishing weights). The high-precision reference table is test_dqmom_reference.cpp's.
 #include <doctest/doctest.h>
+
+#include "fluidbed/moments/eigen_core.hpp"  // first: Eigen without its own warnings
 
 #include <Eigen/LU>
 #include <array>
@@ -18,7 +20,6 @@
 #include "fluidbed/core/vector3.hpp"
 #include "fluidbed/moments/dqmom.hpp"
 #include "fluidbed/moments/dqmom_batched.hpp"
-#include "fluidbed/moments/dqmom_orders.hpp"
 
 using namespace fluidbed::moments;
 

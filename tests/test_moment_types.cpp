@@ -433,3 +433,73 @@ TEST_CASE_TEMPLATE("types: moment_set.hpp — sieve moments, checked, Geldart, d
   const SieveAnalysis<T> counted{edges, fractions, SizeBasis::number};
   CHECK(close(sieve_moment(counted, T(0.5), 1), ratio<T>(3038, 1875), 16));
 }
+
+TEST_CASE_TEMPLATE("types: dqmom.hpp and dqmom_batched.hpp — growth identities, batched and any orders",
+                   T, float, double, long double) {
+  // Nodes 1/8, 1/4, 3/8 (m; the scale is a power of two, exact), dyadic weights and growth rates:
+  // the growth identities c^a = 3φG/ξ, c^ξ = 4φG are exact rationals rounded once.
+  const std::array<T, 3> xi{T(0.125), T(0.25), T(0.375)}, phi{T(0.25), T(0.125), T(0.5)}, g{T(1), T(-2), T(0.5)};
+  const std::span<const T> x(xi), w(phi), rate(g);
+  const dqmom::System<T, 3> system{x, w};
+  REQUIRE(system.size() == 3);
+  const auto terms = dqmom::growth_terms<T, 3>(dqmom::Weights::volume_fraction, w, x, rate);
+  const auto c = system.solve(std::span<const dqmom::PointSource<T>>(terms));
+  for (int i = 0; i < 3; ++i) {
+    CHECK(close(c.weight[i], T(3) * phi[i] * g[i] / xi[i], 64));
+    CHECK(close(c.weighted_node[i], T(4) * phi[i] * g[i], 64));
+  }
+  // The same as moment sources, through System, solve_batched (its κ too) and solve_orders:
+  // within the measured ε κ of the moment form.
+  const std::array<T, 6> orders{T(0), T(1), T(2), T(3), T(4), T(5)};
+  const auto s = dqmom::growth_moment_sources(dqmom::Weights::volume_fraction, w, x, rate, orders);
+  const auto moments = system.solve(std::span<const T>(s));
+  const auto any = dqmom::solve_orders<T, 3>(x, w, std::span<const T>(orders), std::span<const T>(s));
+  const T tolerance = T(16) * std::numeric_limits<T>::epsilon() * system.condition();
+  std::array<std::array<T, 1>, 3> nodes{}, weights{}, a{}, b{};
+  std::array<std::array<T, 1>, 6> sources{};
+  std::array<dqmom::SourceStatus, 1> status{};
+  std::array<T, 1> condition{};
+  dqmom::SourceBatch<T, 3> batch;
+  for (int i = 0; i < 3; ++i) {
+    nodes[i][0] = xi[i], weights[i][0] = phi[i];
+    batch.nodes[i] = nodes[i], batch.weights[i] = weights[i], batch.weight_sources[i] = a[i];
+    batch.weighted_node_sources[i] = b[i];
+  }
+  for (int k = 0; k < 6; ++k) sources[k][0] = s[k], batch.moment_sources[k] = sources[k];
+  batch.status = status;
+  batch.condition = condition;
+  dqmom::solve_batched(batch);
+  CHECK(status[0] == dqmom::SourceStatus::ok);
+  CHECK(close(condition[0], system.condition(), 64));
+  for (int i = 0; i < 3; ++i)
+    for (const auto& [got_a, got_b] : {std::pair{moments.weight[i], moments.weighted_node[i]},
+                                       std::pair{any.weight[i], any.weighted_node[i]}, std::pair{a[i][0], b[i][0]}}) {
+      CHECK(std::abs(got_a - c.weight[i]) <= tolerance * T(24));  // |c^a| <= 24
+      CHECK(std::abs(got_b - c.weighted_node[i]) <= tolerance * T(1));
+    }
+  // Diffusion as moments and as functionals; number sources as volume sources.
+  const std::array<T, 3> intensity{T(1), T(0.5), T(0.25)};
+  const auto sd = dqmom::diffusion_sources<T, 3>(x, std::span<const T>(intensity));
+  const auto dt = dqmom::diffusion_terms<T, 3>(x, std::span<const T>(intensity));
+  const auto by_moments = system.solve(std::span<const T>(sd));
+  const auto by_terms = system.solve(std::span<const dqmom::PointSource<T>>(dt));
+  for (int i = 0; i < 3; ++i) CHECK(std::abs(by_moments.weight[i] - by_terms.weight[i]) <= tolerance * T(4096));
+  const auto volume = dqmom::volume_sources_from_number(c, x, T(1));
+  CHECK(close(volume.weight[0], T(3) * xi[0] * xi[0] * c.weighted_node[0] - T(2) * xi[0] * xi[0] * xi[0] * c.weight[0], 16));
+  // Transport pieces.
+  const auto p = dqmom::moment_velocity_coefficients<T, 3>(w, x, T(2));
+  CHECK(close(p[0] + p[1] + p[2], T(1), 8));
+  const std::array<T, 3> u{T(1), T(1), T(1)};
+  CHECK(close(dqmom::moment_velocity<T, 3>(w, x, std::span<const T>(u), T(3)), T(1), 8));
+  CHECK(close(dqmom::upwind_moment_flux(w, x, w, x, std::span<const T>(u), T(0)), T(0.875), 8));
+  CHECK(close(dqmom::self_diffusivity(T(1), T(3), T(1)), T(1) / std::sqrt(T(3.14159265358979323846264338327950288L)), 8));
+  CHECK(dqmom::upwind_numerical_diffusivity(T(2), T(0.5)) == T(0.5));
+  CHECK(dqmom::diffusion_intensity(T(2), T(0.5), T(0.25)) == T(0.25));
+  std::array<T, 6> m{};
+  for (int k = 0; k < 6; ++k)
+    for (int i = 0; i < 3; ++i) m[k] += phi[i] * std::pow(xi[i], T(k));
+  const auto state = dqmom::state_from_moments<T, 3>(std::span<const T>(m));
+  REQUIRE(state.size == 3);
+  const auto back = dqmom::nodes_of<T, 3>(state, std::array<T, 3>{});
+  for (int i = 0; i < 3; ++i) CHECK(close(back[i], xi[i], 4096));  // the inversion's conditioning
+}

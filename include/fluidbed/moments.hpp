@@ -1,6 +1,6 @@
 // fluidbed — umbrella header for moment inversion (QMOM/DQMOM quadrature).
 //
-// It includes batched.hpp, dqmom_orders.hpp and eigen_backend.hpp, the headers that need Eigen 3.4. A host
+// It includes batched.hpp and eigen_backend.hpp, the two headers that need Eigen 3.4. A host
 // without Eigen includes the per-cell headers it uses instead (inversion.hpp, adaptive.hpp,
 // realizability.hpp, correction.hpp, moment_set.hpp, dqmom.hpp, ...), which need only the standard
 // library and Boost.Math (moment_set.hpp's constants).
@@ -11,7 +11,6 @@
 #include "moments/correction.hpp"
 #include "moments/dqmom.hpp"
 #include "moments/dqmom_batched.hpp"
-#include "moments/dqmom_orders.hpp"
 #include "moments/eigen_backend.hpp"
 #include "moments/inversion.hpp"
 #include "moments/jacobi_eigen.hpp"

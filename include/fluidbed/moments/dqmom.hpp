@@ -31,7 +31,7 @@
 //    and death of aggregation between nodes (p at (ξ_i³ + ξ_j³)^(1/3) and at ξ_i) are of this
 //    form; their sources come out to rounding whatever the conditioning of X (tested: pure growth
 //    gives c^a = 3φG/ξ and c^ξ = 4φG to a few ulp for ν = 1 … 8).
-// Both solve in units of L = the power of two nearest the largest node (exact scaling:
+// Both solve in units of L = the power of two at or below the largest node (exact scaling:
 // s̃_k = s_k/L^k, c^ξ = L c̃^ξ), so that results do not depend on the length unit (SI or µm).
 //
 // Conditioning. det X = (−1)^(ν(ν−1)/2) Π_{i<j} (ξ_i − ξ_j)⁴ (tested): X is singular exactly where
@@ -124,7 +124,8 @@ FLUIDBED_HOST_DEVICE Jet<T> lagrange_jet(const std::array<T, N>& x, int n, int i
   return p;
 }
 
-// A power of two within a factor 2 of x > 0 (x's exponent: the scale costs no rounding). For
+// The power of two at or below x > 0, within a factor 2 (x's exponent: scaling by it costs no
+// rounding). For
 // float and double by masking the bits, which vectorises; frexp otherwise.
 template <class T>
 FLUIDBED_HOST_DEVICE T power_of_two_near(const T& x) {
@@ -134,30 +135,33 @@ FLUIDBED_HOST_DEVICE T power_of_two_near(const T& x) {
     return std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) & 0x7f800000u);
   } else {
     int exponent = 0;
-    (void)std::frexp(x, &exponent);
-    return std::ldexp(T(1), exponent);
+    (void)std::frexp(x, &exponent);  // x = f 2^exponent, f in [0.5, 1)
+    return std::ldexp(T(1), exponent - 1);
   }
 }
 
-// The default merge gap (1000 ε)^(1/3), by Newton's iteration at compile time.
+// The default merge gap (1000 ε)^(1/3), by Newton's iteration at compile time (a variable, so
+// that no build evaluates it at run time).
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr T default_merge_gap() {
+constexpr T cube_root_of_1000_epsilon() {
   const double target = 1000 * double(std::numeric_limits<T>::epsilon());
   double root = 1e-3;
   for (int i = 0; i < 60; ++i) root -= (root * root * root - target) / (3 * root * root);
   return T(root);
 }
+template <class T>
+inline constexpr T default_merge_gap = cube_root_of_1000_epsilon<T>();
 
 template <class T>
 FLUIDBED_HOST_DEVICE T merge_gap(const Options& options) {
-  return options.merge_gap < 0 ? default_merge_gap<T>() : T(options.merge_gap);
+  return options.merge_gap < 0 ? default_merge_gap<T> : T(options.merge_gap);
 }
 
 }  // namespace detail
 
 namespace detail {
 
-// A cell's nodes in units of L (the power of two nearest the largest), grouped into merged nodes.
+// A cell's nodes in units of L (the power of two at or below the largest), grouped into merged nodes.
 template <class T, int N>
 struct MergedNodes {
   int size = 0, distinct = 0;  // ν (0 on invalid input) and ν'
@@ -391,6 +395,96 @@ FLUIDBED_HOST_DEVICE Sources<T, N> volume_sources_from_number(const Sources<T, N
     out.weight[i] = shape_factor * (T(3) * x2 * number.weighted_node[i] - T(2) * x3 * number.weight[i]);
     out.weighted_node[i] = shape_factor * (T(4) * x3 * number.weighted_node[i] - T(3) * x3 * x * number.weight[i]);
   }
+  return out;
+}
+
+// Sources for any 2ν moment orders, integer or fractional (the thesis §5.7 and Marchisio & Fox
+// allow any 2ν independent real orders; 0 and 1 carry the weights and weighted nodes):
+//   Σ_i (1 − p) ξ_i^p c_i^a + p ξ_i^(p−1) c_i^ξ = s_p   for p = orders[j], s_p = s[j].
+// orders must be 2ν distinct finite reals with orders[0] = 0 and orders[1] = 1 (invalid_input
+// otherwise); merged nodes keep the first 2ν' orders, so list the others by priority. Without the
+// polynomial structure there is no Hermite shortcut: the scaled matrix (units of L as above,
+// s̃_p = s_p / L^p) is solved by Gaussian elimination with partial pivoting (2ν <= 2N; written out
+// rather than Eigen's PartialPivLU, whose blocked kernels draw GCC 12's false -Wmaybe-uninitialized
+// and -Warray-bounds at -march=native into a host's -Werror build), and κ_∞ comes from X̃⁻¹
+// column by column.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE Sources<T, N> solve_orders(std::span<const T> nodes, std::span<const T> weights,
+                                                std::span<const T> orders, std::span<const T> s,
+                                                const Options& options = {}) {
+  const detail::MergedNodes<T, N> merged(nodes, weights, options);
+  const int n = merged.size;
+  if (n == 0 || int(orders.size()) != 2 * n || int(s.size()) != 2 * n || orders[0] != T(0) || orders[1] != T(1))
+    return Sources<T, N>{};
+  for (int j = 0; j < 2 * n; ++j) {
+    if (!(std::abs(orders[j]) < std::numeric_limits<T>::infinity())) return Sources<T, N>{};
+    for (int k = 0; k < j; ++k)
+      if (orders[j] == orders[k]) return Sources<T, N>{};
+  }
+  const int m = merged.distinct, size = 2 * m;
+  std::array<std::array<T, 2 * N>, 2 * N> lu{};
+  std::array<T, 2 * N> rhs{}, matrix_rows{};
+  for (int j = 0; j < size; ++j) {
+    const T p = orders[j];
+    rhs[j] = s[j] / std::pow(merged.scale, p);
+    for (int c = 0; c < m; ++c) {
+      lu[j][c] = (T(1) - p) * std::pow(merged.center[c], p);
+      lu[j][m + c] = p == T(0) ? T(0) : p * std::pow(merged.center[c], p - T(1));
+      matrix_rows[j] += std::abs(lu[j][c]) + std::abs(lu[j][m + c]);
+    }
+  }
+  // LU with row pivoting, then forward and back substitution for any right-hand side.
+  std::array<int, 2 * N> pivot{};
+  for (int k = 0; k < size; ++k) {
+    int best = k;
+    for (int r = k + 1; r < size; ++r)
+      if (std::abs(lu[r][k]) > std::abs(lu[best][k])) best = r;
+    pivot[k] = best;
+    if (best != k)
+      for (int c = 0; c < size; ++c) {
+        const T swap = lu[k][c];
+        lu[k][c] = lu[best][c];
+        lu[best][c] = swap;
+      }
+    for (int r = k + 1; r < size; ++r) {
+      lu[r][k] /= lu[k][k];
+      for (int c = k + 1; c < size; ++c) lu[r][c] -= lu[r][k] * lu[k][c];
+    }
+  }
+  auto substitute = [&](std::array<T, 2 * N> b) {
+    for (int k = 0; k < size; ++k) {
+      const T swap = b[k];
+      b[k] = b[pivot[k]];
+      b[pivot[k]] = swap;
+    }
+    for (int r = 0; r < size; ++r)
+      for (int c = 0; c < r; ++c) b[r] -= lu[r][c] * b[c];
+    for (int r = size - 1; r >= 0; --r) {
+      for (int c = r + 1; c < size; ++c) b[r] -= lu[r][c] * b[c];
+      b[r] /= lu[r][r];
+    }
+    return b;
+  };
+  const std::array<T, 2 * N> c = substitute(rhs);
+  std::array<T, 2 * N> inverse_rows{};
+  for (int j = 0; j < size; ++j) {
+    std::array<T, 2 * N> unit{};
+    unit[j] = T(1);
+    const std::array<T, 2 * N> column = substitute(unit);
+    for (int r = 0; r < size; ++r) inverse_rows[r] += std::abs(column[r]);
+  }
+  T matrix_norm(0), inverse_norm(0);
+  for (int r = 0; r < size; ++r) {
+    matrix_norm = matrix_rows[r] > matrix_norm ? matrix_rows[r] : matrix_norm;
+    inverse_norm = inverse_rows[r] > inverse_norm ? inverse_rows[r] : inverse_norm;
+  }
+  Sources<T, N> out = merged.header(matrix_norm * inverse_norm);
+  std::array<T, N> alpha{}, beta{};
+  for (int k = 0; k < m; ++k) {
+    alpha[k] = c[k];
+    beta[k] = c[m + k] - merged.center[k] * c[k];
+  }
+  merged.distribute(alpha, beta, out);
   return out;
 }
 
