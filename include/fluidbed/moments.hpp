@@ -1,6 +1,6 @@
 // fluidbed — umbrella header for moment inversion (QMOM/DQMOM quadrature).
 //
-// It includes batched.hpp and eigen_backend.hpp, the two headers that need Eigen 3.4. A host
+// It includes batched.hpp, dqmom_batched.hpp and eigen_backend.hpp, the headers that need Eigen 3.4. A host
 // without Eigen includes the per-cell headers it uses instead (inversion.hpp, adaptive.hpp,
 // realizability.hpp, correction.hpp, moment_set.hpp, dqmom.hpp, ...), which need only the standard
 // library and Boost.Math (moment_set.hpp's constants).
