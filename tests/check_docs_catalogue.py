@@ -19,8 +19,8 @@ Fails (exit 1, listing every problem) when
   5. a Markdown link `file.md#anchor` (or `#anchor`) names a heading that file does not have
      (the heading ids GitHub forms).
 
-What counts as a public closure. The headers of the five closure families
-(drag/, settling/, elastic/, kinetic_theory/, moments/ under include/fluidbed/) are read
+What counts as a public closure. The headers of the closure families (the folders of FAMILIES
+under include/fluidbed/) are read
 with comments, string literals and preprocessor lines removed, and scanned brace by brace
 (the file is cut into "chunks" at ';', '{' and '}', and each '{' is classified by the chunk
 before it: namespace, struct/class, enum, concept, function, or other). A public closure is
@@ -41,7 +41,8 @@ import re
 import sys
 from pathlib import Path
 
-FAMILIES = ("single_particle", "settling", "drag", "fluidization", "elastic", "interaction", "kinetic_theory", "moments")
+FAMILIES = ("single_particle", "settling", "drag", "fluidization", "elastic", "interaction", "kinetic_theory", "moments",
+            "polydisperse")
 
 # ----------------------------------------------------------------------------- C++ scanning
 

@@ -26,6 +26,7 @@ LAYERS = [
     ("drag",),
     ("fluidization",),
     ("elastic",),
+    ("polydisperse",),
     ("umbrellas",),
 ]
 LEVEL = {name: level for level, names in enumerate(LAYERS) for name in names}

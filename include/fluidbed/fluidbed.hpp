@@ -9,3 +9,4 @@
 #include "interaction.hpp"
 #include "kinetic_theory.hpp"
 #include "moments.hpp"
+#include "polydisperse.hpp"
