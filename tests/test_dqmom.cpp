@@ -221,7 +221,7 @@ TEST_CASE("DQMOM coincident nodes: merged below the gap, the limit of the unmerg
   CHECK(std::abs(exploding.weight[1]) > 1e6 * std::abs(bounded.weight[1]));
 }
 
-TEST_CASE("DQMOM any orders: fractional orders give the growth identity; integer orders agree with the Hermite solve") {
+TEST_CASE("DQMOM any orders: fractional orders give the growth identity, integer orders agree with the Hermite solve") {
   const int n = 3;
   const auto xi = first<double>(sizes, n), phi = first<double>(fractions, n);
   const std::array<double, 3> g{1e-7, -2e-7, 3e-7};
@@ -401,7 +401,7 @@ TEST_CASE("DQMOM batched: every cell as the per-cell System (within 8 eps condit
   CHECK(a2 == a);
 }
 
-TEST_CASE("DQMOM conventions: number-density sources as volume-fraction sources (seed 001 eqs 77-78 corrected); seed 001's printed rows") {
+TEST_CASE("DQMOM conventions: number-density sources as volume-fraction sources (seed 001 eqs 77-78 corrected), seed 001 printed rows") {
   const int n = 3;
   const auto xi = first<double>(sizes, n);
   const double shape = M_PI / 6;
@@ -443,4 +443,39 @@ TEST_CASE("DQMOM conventions: number-density sources as volume-fraction sources 
   }
   CHECK(relative(printed_k2, s[2]) > 1e-3);
   CHECK(relative(printed_last, s[5]) > 1e-3);
+}
+
+TEST_CASE("DQMOM aggregation as point functionals: the same sources as its moments, and no volume created") {
+  // Constant kernel b [m³/s] between number densities w_i = φ_i/(k_v ξ_i³); a pair (i, j) makes a
+  // particle of diameter (ξ_i³ + ξ_j³)^(1/3). Volume-fraction moments: the birth of volume v_ij at
+  // ξ_ij and the death of v_i at ξ_i and v_j at ξ_j, at the rate ½ b w_i w_j.
+  const int n = 3;
+  const auto xi = first<double>(sizes, n), phi = first<double>(fractions, n);
+  const double shape = M_PI / 6, kernel = 1e-12;
+  std::vector<dqmom::PointSource<double>> terms;
+  std::array<double, 6> s{};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double vi = shape * std::pow(xi[i], 3), vj = shape * std::pow(xi[j], 3);
+      const double rate = 0.5 * kernel * (phi[i] / vi) * (phi[j] / vj), born = std::cbrt(std::pow(xi[i], 3) + std::pow(xi[j], 3));
+      terms.push_back({born, rate * (vi + vj), 0});
+      terms.push_back({xi[i], -rate * vi, 0});
+      terms.push_back({xi[j], -rate * vj, 0});
+      for (int k = 0; k < 2 * n; ++k)
+        s[k] += rate * ((vi + vj) * std::pow(born, k) - vi * std::pow(xi[i], k) - vj * std::pow(xi[j], k));
+    }
+  const dqmom::System<double, 3> system{xi, phi};
+  const auto by_terms = system.solve(std::span<const dqmom::PointSource<double>>(terms));
+  const auto by_moments = system.solve(std::span<const double>(s));
+  double largest_a = 0, largest_b = 0, total = 0;
+  for (int i = 0; i < n; ++i) {
+    largest_a = std::max(largest_a, std::abs(by_terms.weight[i]));
+    largest_b = std::max(largest_b, std::abs(by_terms.weighted_node[i]));
+    total += by_terms.weight[i];
+  }
+  CHECK(std::abs(total) < 1e-14 * largest_a);  // Σ c^φ = S_0 = 0: volume conserved
+  for (int i = 0; i < n; ++i) {
+    CHECK(std::abs(by_moments.weight[i] - by_terms.weight[i]) < 4 * eps * system.condition() * largest_a);
+    CHECK(std::abs(by_moments.weighted_node[i] - by_terms.weighted_node[i]) < 4 * eps * system.condition() * largest_b);
+  }
 }

@@ -2,7 +2,8 @@
 // monodisperse drag law (value and ∂β/∂ε, ∂β/∂w), every closure of every registry of the
 // library (fluidbed::Registries: hot path and with_derivatives), invert moment sets to three and
 // four nodes, evaluate the kinetic-theory set with its derivatives, the elastic force with its
-// drag, and the functions that are not closures (gas damping, buoyancy, virtual mass).
+// drag, the functions that are not closures (gas damping, buoyancy, virtual mass), the DQMOM
+// sources and the multi-fluid closures of two classes.
 // The host evaluates the same cells and, where a GPU is present, compares; where none is, the
 // program reports a skip. nvcc reports a host function reached from device code, so that every
 // warning being an error (run_device_compile_test.sh) also shows that no closure's device path
@@ -204,6 +205,36 @@ FLUIDBED_HOST_DEVICE void free_function_cell(int i, double* out) {
   out[i * 3 + 2] = interaction::virtual_mass_force(0.5 * u, 1.2, fluid_acceleration, particle_acceleration)[2];
 }
 
+// DQMOM sources of four nodes (moment sources with the condition number, growth as point
+// functionals, fractional orders) and the multi-fluid closures of two classes.
+constexpr int polydisperse_outputs = 3 * 8 + 1 + 3;
+
+FLUIDBED_HOST_DEVICE void polydisperse_cell(int i, double* out) {
+  const double u = (i + 0.5) / cells;
+  const std::array<double, 4> xi{75e-6, 103e-6 + 50e-6 * u, 240e-6, 355e-6}, phi{0.1, 0.2, 0.15, 0.05},
+      growth{1e-7, -2e-7, 3e-7 * u, 1e-8};
+  const std::array<double, 8> s{1e-3, 2e-7, 3e-11 * u, 5e-15, -1e-18, 2e-22, 7e-26, 1e-30},
+      orders{0, 1, 0.5, 1.5, 2, 2.5, 3, 3.5};
+  const moments::dqmom::System<double, 4> system{std::span<const double>(xi), std::span<const double>(phi)};
+  const auto terms = moments::dqmom::growth_terms<double, 4>(moments::dqmom::Weights::volume_fraction,
+                                                             std::span<const double>(phi), std::span<const double>(xi),
+                                                             std::span<const double>(growth));
+  const auto from_moments = system.solve(std::span<const double>(s));
+  const auto from_terms = system.solve(std::span<const moments::dqmom::PointSource<double>>(terms));
+  const auto from_orders = moments::dqmom::solve_orders<double, 4>(std::span<const double>(xi), std::span<const double>(phi),
+                                                                   std::span<const double>(orders), std::span<const double>(s));
+  double* slot = out + i * polydisperse_outputs;
+  for (const auto* c : {&from_moments, &from_terms, &from_orders})
+    for (int k = 0; k < 4; ++k) *slot++ = c->weight[k], *slot++ = c->weighted_node[k];
+  *slot++ = from_moments.condition;
+  const polydisperse::MultiFluidState<double, 2> state{
+      2, {0.2, 0.2 * u}, {100e-6, 300e-6}, {2500.0, 2500.0}, {{{0, 0, 0.01}, {0, 0, -0.02 * u}}}, {1.2, 1.8e-5}, {0, 0, 0.3}};
+  const auto coefficients = polydisperse::ClassClosures<>{}(state);
+  *slot++ = coefficients.gas_particle(0).pressure_gradient();
+  *slot++ = coefficients.gas_particle(1).classical();
+  *slot++ = coefficients.solid_solid(0, 1);
+}
+
 template <void (*Cell)(int, double*)>
 __global__ void per_cell_kernel(double* out) {
   const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -267,7 +298,8 @@ int main() {
                           device_host_difference<quadrature_cell>(quadrature_outputs, "inversion"),
                           device_host_difference<kinetic_theory_cell>(3, "kinetic theory"),
                           device_host_difference<elastic_cell>(3, "elastic force"),
-                          device_host_difference<free_function_cell>(3, "free functions")};
+                          device_host_difference<free_function_cell>(3, "free functions"),
+                          device_host_difference<polydisperse_cell>(polydisperse_outputs, "polydisperse")};
   for (double w : worst)
     if (!(w <= tolerance)) {
       std::printf("FAILED: device and host differ by more than %.0e\n", tolerance);

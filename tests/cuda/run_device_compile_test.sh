@@ -46,7 +46,7 @@ if [ "$step" = compile ] || [ ! -x "$program" ]; then
     fi
   done
   mv "$program.new" "$program"
-  echo "every closure of every registry, moment inversion, the kinetic-theory set and the elastic force compiled as device code, every kernel storing its results (debug and release)"
+  echo "every closure of every registry, moment inversion, the kinetic-theory set, the elastic force, the DQMOM sources and the multi-fluid closures compiled as device code, every kernel storing its results (debug and release)"
 fi
 [ "$step" = compile ] && exit 0
 "$program"
