@@ -23,6 +23,8 @@
 
 #include "fluidbed/moments/batched.hpp"
 #include "fluidbed/moments/correction.hpp"
+#include "fluidbed/moments/dqmom.hpp"
+#include "fluidbed/moments/dqmom_batched.hpp"
 #include "fluidbed/moments/realizability.hpp"
 #include "fluidbed/registries.hpp"
 #include "fluidbed_c.h"
@@ -783,6 +785,103 @@ TEST_CASE("C interface: bad input to the mixture, exchange and moment functions"
   CHECK(fluidbed_moment_realizability(FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, 2, 1, nan_set, status, realizable, nullptr,
                                       nullptr, &error) == FLUIDBED_OK);
   CHECK(status[0] == FLUIDBED_INVERSION_INVALID_INPUT);
+}
+
+TEST_CASE("C interface: DQMOM sources, moment and point-functional forms, bit for bit with the C++ solves") {
+  namespace dq = fluidbed::moments::dqmom;
+  constexpr std::size_t n = 37;  // not a multiple of the lanes
+  const auto compare = [&]<int N>(std::integral_constant<int, N>) {
+    constexpr int count = N;
+    INFO(count << " nodes");
+    const std::size_t nodes_size = std::size_t(count) * n, moments_size = 2 * nodes_size;
+    std::vector<double> nodes(nodes_size), weights(nodes_size), rates(nodes_size), intensity(nodes_size),
+        sources(moments_size);
+    for (std::size_t c = 0; c < n; ++c) {
+      for (int i = 0; i < count; ++i) {
+        const std::size_t at = std::size_t(i) * n + c;
+        nodes[at] = 40e-6 * std::pow(1.6, i) * (1 + 0.01 * double(c));  // distinct, SI
+        weights[at] = 0.05 + 0.01 * double((i + c) % 7);
+        rates[at] = 1e-7 * (i % 2 ? -1.0 : 1.0) * (1 + 0.1 * double(c % 5));
+        intensity[at] = 1e-14 * double(1 + (i + 2 * c) % 3);
+      }
+      for (int k = 0; k < 2 * count; ++k) sources[std::size_t(k) * n + c] = std::pow(-2e-4, k) * double(1 + c % 4);
+    }
+    nodes[1] = nodes[(count > 1 ? n : 0) + 1] * (count > 1 ? 1 + 1e-9 : 1);  // a cell with merged nodes
+    nodes[2] = -nodes[2];                                                   // an invalid cell
+    std::vector<double> a(nodes_size), b(nodes_size), condition(n), a2(nodes_size), b2(nodes_size), condition2(n);
+    std::vector<int> status(n), status2(n);
+    fluidbed_error error{};
+    REQUIRE(fluidbed_dqmom_sources(count, n, nodes.data(), weights.data(), sources.data(), a.data(), b.data(),
+                                   status.data(), condition.data(), &error) == FLUIDBED_OK);
+    REQUIRE(fluidbed_dqmom_growth_diffusion_sources(count, FLUIDBED_DQMOM_VOLUME_FRACTION, n, nodes.data(),
+                                                    weights.data(), rates.data(), intensity.data(), a2.data(),
+                                                    b2.data(), status2.data(), condition2.data(), &error) == FLUIDBED_OK);
+    CHECK(status[2] == FLUIDBED_DQMOM_INVALID_INPUT);
+    if (count > 1) CHECK(status[1] == FLUIDBED_DQMOM_MERGED_NODES);
+    {
+      // The C++ batched solve on the same fields.
+      std::array<std::vector<double>, N> ca, cb;
+      std::vector<dq::SourceStatus> cs(n);
+      std::vector<double> ck(n);
+      dq::SourceBatch<double, N> batch;
+      for (int i = 0; i < N; ++i) {
+        ca[i].resize(n), cb[i].resize(n);
+        batch.nodes[i] = std::span<const double>(nodes.data() + std::size_t(i) * n, n);
+        batch.weights[i] = std::span<const double>(weights.data() + std::size_t(i) * n, n);
+        batch.weight_sources[i] = ca[i], batch.weighted_node_sources[i] = cb[i];
+      }
+      for (int k = 0; k < 2 * N; ++k) batch.moment_sources[k] = std::span<const double>(sources.data() + std::size_t(k) * n, n);
+      batch.status = cs, batch.condition = ck;
+      dq::solve_batched(batch);
+      for (std::size_t c = 0; c < n; ++c) {
+        INFO("cell " << c);
+        CHECK(status[c] == int(cs[c]));
+        CHECK(same_bits(condition[c], ck[c]));
+        // The per-cell System with growth and diffusion as point functionals.
+        std::array<double, N> x{}, w{}, g{}, d{};
+        for (int i = 0; i < N; ++i) {
+          const std::size_t at = std::size_t(i) * n + c;
+          x[i] = nodes[at], w[i] = weights[at], g[i] = rates[at], d[i] = intensity[at];
+          CHECK(same_bits(a[at], ca[i][c]));
+          CHECK(same_bits(b[at], cb[i][c]));
+        }
+        const dq::System<double, N> system{std::span<const double>(x), std::span<const double>(w)};
+        const auto growth = dq::growth_terms<double, N>(dq::Weights::volume_fraction, std::span<const double>(w),
+                                                        std::span<const double>(x), std::span<const double>(g));
+        const auto diffusion = dq::diffusion_terms<double, N>(std::span<const double>(x), std::span<const double>(d));
+        std::array<dq::PointSource<double>, 3 * N> terms{};
+        std::copy(growth.begin(), growth.end(), terms.begin());
+        std::copy(diffusion.begin(), diffusion.end(), terms.begin() + 2 * N);
+        const auto out = system.solve(std::span<const dq::PointSource<double>>(terms));
+        CHECK(status2[c] == int(out.status));
+        CHECK(same_bits(condition2[c], out.condition));
+        for (int i = 0; i < N; ++i) {
+          CHECK(same_bits(a2[std::size_t(i) * n + c], out.weight[i]));
+          CHECK(same_bits(b2[std::size_t(i) * n + c], out.weighted_node[i]));
+        }
+      }
+    }
+  };
+  [&]<int... M>(std::integer_sequence<int, M...>) {
+    (compare(std::integral_constant<int, M + 1>{}), ...);
+  }(std::make_integer_sequence<int, FLUIDBED_MAX_NODES>{});
+  // Counts, arrays and the weights kind are errors; a bad cell is a status.
+  const double x[] = {1e-4, 2e-4}, w[] = {0.1, 0.2}, s[] = {1, 1, 1, 1};
+  double a[2], b[2];
+  int status[1];
+  fluidbed_error error{};
+  for (const int count : {0, FLUIDBED_MAX_NODES + 1})
+    CHECK(fluidbed_dqmom_sources(count, 1, x, w, s, a, b, status, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_dqmom_sources(2, 1, x, nullptr, s, a, b, status, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(fluidbed_dqmom_growth_diffusion_sources(2, static_cast<fluidbed_dqmom_weights>(2), 1, x, w, nullptr, nullptr, a,
+                                                b, status, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(std::string(error.message) == "fluidbed: unknown fluidbed_dqmom_weights 2");
+  // Neither growth nor diffusion: no sources.
+  REQUIRE(fluidbed_dqmom_growth_diffusion_sources(2, FLUIDBED_DQMOM_NUMBER_DENSITY, 1, x, w, nullptr, nullptr, a, b,
+                                                  status, nullptr, &error) == FLUIDBED_OK);
+  CHECK(status[0] == FLUIDBED_DQMOM_OK);
+  CHECK(a[0] == 0);
+  CHECK(b[1] == 0);
 }
 
 TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {

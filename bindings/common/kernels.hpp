@@ -20,6 +20,8 @@
 #include "any_closure.hpp"
 #include "fluidbed/moments/batched.hpp"
 #include "fluidbed/moments/correction.hpp"
+#include "fluidbed/moments/dqmom.hpp"
+#include "fluidbed/moments/dqmom_batched.hpp"
 #include "fluidbed/moments/realizability.hpp"
 
 namespace fluidbed::bindings {
@@ -519,6 +521,76 @@ void correct_moments(int moment_count, std::size_t n, const T* moments_in, const
     if (realizable_moments != nullptr) realizable_moments[c] = result.realizable_moments;
   };
   detail::for_each_moment_set(moment_count, n, moments_in, correct);
+}
+
+
+// DQMOM sources of n cells of node_count nodes each (moments::dqmom::solve_batched), structure of
+// arrays: node i of cell c at nodes[i n + c], its weight at weights[i n + c], moment source k at
+// moment_sources[k n + c] (k = 0 … 2 node_count − 1); writes c^a at weight_sources[i n + c], c^ξ at
+// weighted_node_sources[i n + c], the status (moments::dqmom::SourceStatus as int) and, if
+// condition is not null, κ_∞. A cell's outcome is its status; only a node count outside
+// 1 … max_nodes or a missing array throws.
+template <class T>
+void dqmom_sources(int node_count, std::size_t n, const T* nodes, const T* weights, const T* moment_sources,
+                   T* weight_sources, T* weighted_node_sources, int* statuses, T* condition) {
+  if (node_count < 1 || node_count > max_nodes)
+    throw InvalidArgument("fluidbed: dqmom_sources: " + std::to_string(node_count) + " nodes; 1 to " +
+                          std::to_string(max_nodes) + " are offered");
+  require_arrays(n, "dqmom_sources", nodes, weights, moment_sources, weight_sources, weighted_node_sources, statuses);
+  detail::with_compiled_count<max_nodes>(std::size_t(node_count), [&]<std::size_t N>(detail::Count<N>) {
+    moments::dqmom::SourceBatch<T, int(N)> batch;
+    for (std::size_t i = 0; i < N; ++i) {
+      batch.nodes[i] = std::span<const T>(nodes + i * n, n);
+      batch.weights[i] = std::span<const T>(weights + i * n, n);
+      batch.weight_sources[i] = std::span<T>(weight_sources + i * n, n);
+      batch.weighted_node_sources[i] = std::span<T>(weighted_node_sources + i * n, n);
+    }
+    for (std::size_t k = 0; k < 2 * N; ++k) batch.moment_sources[k] = std::span<const T>(moment_sources + k * n, n);
+    std::vector<moments::dqmom::SourceStatus> status(n);
+    batch.status = std::span<moments::dqmom::SourceStatus>(status);
+    if (condition != nullptr) batch.condition = std::span<T>(condition, n);
+    moments::dqmom::solve_batched(batch);
+    for (std::size_t c = 0; c < n; ++c) statuses[c] = static_cast<int>(status[c]);
+  });
+}
+
+// DQMOM sources of growth at rates growth_rate[i n + c] (weights of the given kind) and of
+// diffusion of intensity 𝒞_i = diffusion_intensity[i n + c], as point functionals
+// (moments::dqmom::System, growth_terms, diffusion_terms: exact to rounding); either array may be
+// null (no such source). Layout and outputs as dqmom_sources.
+template <class T>
+void dqmom_growth_diffusion_sources(int node_count, moments::dqmom::Weights form, std::size_t n, const T* nodes,
+                                    const T* weights, const T* growth_rate, const T* diffusion_intensity,
+                                    T* weight_sources, T* weighted_node_sources, int* statuses, T* condition) {
+  if (node_count < 1 || node_count > max_nodes)
+    throw InvalidArgument("fluidbed: dqmom_growth_diffusion_sources: " + std::to_string(node_count) +
+                          " nodes; 1 to " + std::to_string(max_nodes) + " are offered");
+  require_arrays(n, "dqmom_growth_diffusion_sources", nodes, weights, weight_sources, weighted_node_sources, statuses);
+  detail::with_compiled_count<max_nodes>(std::size_t(node_count), [&]<std::size_t N>(detail::Count<N>) {
+    for_each_cell(n, [&](std::size_t c) {
+      std::array<T, N> x{}, w{}, rate{}, intensity{};
+      for (std::size_t i = 0; i < N; ++i) {
+        x[i] = nodes[i * n + c], w[i] = weights[i * n + c];
+        rate[i] = growth_rate != nullptr ? growth_rate[i * n + c] : T(0);
+        intensity[i] = diffusion_intensity != nullptr ? diffusion_intensity[i * n + c] : T(0);
+      }
+      const moments::dqmom::System<T, int(N)> system{std::span<const T>(x), std::span<const T>(w)};
+      const auto growth = moments::dqmom::growth_terms<T, int(N)>(form, std::span<const T>(w), std::span<const T>(x),
+                                                                  std::span<const T>(rate));
+      const auto diffusion =
+          moments::dqmom::diffusion_terms<T, int(N)>(std::span<const T>(x), std::span<const T>(intensity));
+      std::array<moments::dqmom::PointSource<T>, 3 * N> terms{};
+      for (std::size_t j = 0; j < 2 * N; ++j) terms[j] = growth[j];
+      for (std::size_t j = 0; j < N; ++j) terms[2 * N + j] = diffusion[j];
+      const auto out = system.solve(std::span<const moments::dqmom::PointSource<T>>(terms));
+      for (std::size_t i = 0; i < N; ++i) {
+        weight_sources[i * n + c] = out.weight[i];
+        weighted_node_sources[i * n + c] = out.weighted_node[i];
+      }
+      statuses[c] = static_cast<int>(out.status);
+      if (condition != nullptr) condition[c] = out.condition;
+    });
+  });
 }
 
 }  // namespace fluidbed::bindings

@@ -65,6 +65,11 @@ module fluidbed
   integer, parameter, public :: FLUIDBED_CORRECTION_UNCHANGED = 0, FLUIDBED_CORRECTION_MCGRAW = 1, &
                                 FLUIDBED_CORRECTION_LOGNORMAL = 2, FLUIDBED_CORRECTION_MONODISPERSE = 3, &
                                 FLUIDBED_CORRECTION_ZERO_MASS = 4, FLUIDBED_CORRECTION_FAILED = 5
+  ! A cell's outcome of the DQMOM source solve (fluidbed_dqmom_status), and what the weights are
+  ! (fluidbed_dqmom_weights).
+  integer, parameter, public :: FLUIDBED_DQMOM_OK = 0, FLUIDBED_DQMOM_MERGED_NODES = 1, &
+                                FLUIDBED_DQMOM_INVALID_INPUT = 2
+  integer, parameter, public :: FLUIDBED_DQMOM_VOLUME_FRACTION = 0, FLUIDBED_DQMOM_NUMBER_DENSITY = 1
   integer, parameter :: message_size = 512
 
   ! A closure chosen by name; fluidbed_destroy frees it.
@@ -97,7 +102,8 @@ module fluidbed
             fluidbed_of_solid_fraction, fluidbed_constitutive, fluidbed_frictional_viscosity, &
             fluidbed_frictional_stress, fluidbed_mixture_radial_distribution, fluidbed_solid_solid_drag, &
             fluidbed_gas_exchange_source, fluidbed_invert_moments, fluidbed_moment_realizability, &
-            fluidbed_correction_default_options, fluidbed_correct_moments
+            fluidbed_correction_default_options, fluidbed_correct_moments, fluidbed_dqmom_sources, &
+            fluidbed_dqmom_growth_diffusion_sources
 
   ! Whether the arrays agree in size (see sizes_agree_each).
   interface sizes_agree
@@ -371,6 +377,32 @@ module fluidbed
     type(fluidbed_correction_options) function c_correction_default_options() &
         bind(C, name='fluidbed_correction_default_options')
       import :: fluidbed_correction_options
+    end function
+    integer(c_int) function c_dqmom_sources(node_count, n, nodes, weights, moment_sources, weight_sources, &
+                                            weighted_node_sources, status, condition, error) &
+        bind(C, name='fluidbed_dqmom_sources')
+      import :: c_ptr, c_int, c_size_t, c_double, fluidbed_c_error
+      integer(c_int), value :: node_count
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: nodes(*), weights(*), moment_sources(*)
+      real(c_double), intent(out) :: weight_sources(*), weighted_node_sources(*)
+      integer(c_int), intent(out) :: status(*)
+      type(c_ptr), value :: condition
+      type(fluidbed_c_error), intent(out) :: error
+    end function
+    integer(c_int) function c_dqmom_growth_diffusion_sources(node_count, weights_kind, n, nodes, weights, growth_rate, &
+                                                             diffusion_intensity, weight_sources, &
+                                                             weighted_node_sources, status, condition, error) &
+        bind(C, name='fluidbed_dqmom_growth_diffusion_sources')
+      import :: c_ptr, c_int, c_size_t, c_double, fluidbed_c_error
+      integer(c_int), value :: node_count, weights_kind
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: nodes(*), weights(*)
+      type(c_ptr), value :: growth_rate, diffusion_intensity
+      real(c_double), intent(out) :: weight_sources(*), weighted_node_sources(*)
+      integer(c_int), intent(out) :: status(*)
+      type(c_ptr), value :: condition
+      type(fluidbed_c_error), intent(out) :: error
     end function
     integer(c_int) function c_correct_moments(moment_count, n, moments, options, corrected, status, &
                                               realizable_moments, error) bind(C, name='fluidbed_correct_moments')
@@ -1011,6 +1043,66 @@ contains
                     [n, size(moments, 2), n, n])) &
       code = c_correct_moments(int(size(moments, 2), c_int), int(n, c_size_t), moments, options_address, corrected, &
                                status, optional_int_array(realizable_moments), error)
+    code = int(error%status)
+    if (present(message)) message = message_of(error)
+    if (present(cell)) cell = int(error%index) + 1
+  end function
+
+  ! DQMOM source terms of the cells' nodes and weights (shaped (cells, N), N 1 to FLUIDBED_MAX_NODES)
+  ! for moment sources (cells, 2N), moments k = 0 … 2N − 1: weight_sources (c^a) and
+  ! weighted_node_sources (c^ξ), (cells, N), status(c) (FLUIDBED_DQMOM_*) and optionally the
+  ! condition number of each cell's system.
+  integer function fluidbed_dqmom_sources(nodes, weights, moment_sources, weight_sources, weighted_node_sources, &
+                                          status, condition, message, cell) result(code)
+    real(c_double), intent(in), contiguous, target :: nodes(:, :), weights(:, :), moment_sources(:, :)
+    real(c_double), intent(out), contiguous, target :: weight_sources(:, :), weighted_node_sources(:, :)
+    integer(c_int), intent(out), contiguous, target :: status(:)
+    real(c_double), intent(out), contiguous, target, optional :: condition(:)
+    character(len=:), allocatable, intent(out), optional :: message
+    integer, intent(out), optional :: cell
+    type(fluidbed_c_error) :: error
+    integer :: n, count
+    n = size(nodes, 1)
+    count = size(nodes, 2)
+    if (sizes_agree(error, 'fluidbed_dqmom_sources', 'nodes', &
+                    [shape(weights), shape(moment_sources), shape(weight_sources), shape(weighted_node_sources), &
+                     size(status), optional_size(condition, n)], &
+                    [n, count, n, 2 * count, n, count, n, count, n, n])) &
+      code = c_dqmom_sources(int(count, c_int), int(n, c_size_t), nodes, weights, moment_sources, weight_sources, &
+                             weighted_node_sources, status, optional_array(condition), error)
+    code = int(error%status)
+    if (present(message)) message = message_of(error)
+    if (present(cell)) cell = int(error%index) + 1
+  end function
+
+  ! DQMOM source terms of growth (growth_rate, m/s) and of diffusion (diffusion_intensity,
+  ! 𝒞 = 𝒟 φ |∇ξ|²), each optional and shaped (cells, N) like the nodes, solved as point functionals;
+  ! weights_kind FLUIDBED_DQMOM_VOLUME_FRACTION or FLUIDBED_DQMOM_NUMBER_DENSITY. Outputs as
+  ! fluidbed_dqmom_sources.
+  integer function fluidbed_dqmom_growth_diffusion_sources(weights_kind, nodes, weights, weight_sources, &
+                                                           weighted_node_sources, status, growth_rate, &
+                                                           diffusion_intensity, condition, message, cell) result(code)
+    integer, intent(in) :: weights_kind
+    real(c_double), intent(in), contiguous, target :: nodes(:, :), weights(:, :)
+    real(c_double), intent(out), contiguous, target :: weight_sources(:, :), weighted_node_sources(:, :)
+    integer(c_int), intent(out), contiguous, target :: status(:)
+    real(c_double), intent(in), contiguous, target, optional :: growth_rate(:, :), diffusion_intensity(:, :)
+    real(c_double), intent(out), contiguous, target, optional :: condition(:)
+    character(len=:), allocatable, intent(out), optional :: message
+    integer, intent(out), optional :: cell
+    type(fluidbed_c_error) :: error
+    integer :: n, count
+    n = size(nodes, 1)
+    count = size(nodes, 2)
+    if (sizes_agree(error, 'fluidbed_dqmom_growth_diffusion_sources', 'nodes', &
+                    [shape(weights), shape(weight_sources), shape(weighted_node_sources), size(status), &
+                     optional_shape(growth_rate, [n, count]), optional_shape(diffusion_intensity, [n, count]), &
+                     optional_size(condition, n)], &
+                    [n, count, n, count, n, count, n, n, count, n, count, n])) &
+      code = c_dqmom_growth_diffusion_sources(int(count, c_int), int(weights_kind, c_int), int(n, c_size_t), nodes, &
+                                              weights, optional_matrix(growth_rate), &
+                                              optional_matrix(diffusion_intensity), weight_sources, &
+                                              weighted_node_sources, status, optional_array(condition), error)
     code = int(error%status)
     if (present(message)) message = message_of(error)
     if (present(cell)) cell = int(error%index) + 1

@@ -30,17 +30,20 @@
 !  - moments: the inversion recovers known atoms, a zero cell is zero mass, the realizability of
 !    sets with m_0 m_2 < m_1^2 and m_1 m_3 < m_2^2, the correction's monodisperse and log-normal
 !    sets (tests/test_moment_correction.cpp's numbers) and that they come back realizable;
+!  - DQMOM sources: pure growth gives c^φ = 3φG/ξ and c^ξ = 4φG (the point functionals, to a few
+!    ulp; the moment sources, within the condition number), a cell with merged nodes, the wrappers'
+!    bits equal to the C functions', and arrays of the wrong shape;
 !  - the catalogue and the closures' metadata;
 !  - bad input: arrays of different sizes or shapes, NaN fractions (the status, the 1-based cell, the
 !    message naming the argument), an unknown name, closures of the wrong family, bad options.
 ! Usage: fluidbed_fortran_kinetic_theory_moments PATH/TO/tests/reference
 program kinetic_theory_moments
-  use, intrinsic :: iso_c_binding, only: c_double, c_int, c_size_t, c_ptr, c_null_ptr
+  use, intrinsic :: iso_c_binding, only: c_double, c_int, c_size_t, c_ptr, c_null_ptr, c_loc
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
   use fluidbed
   use fortran_checks
   implicit none
-  ! Two C functions themselves, called on the same arrays to show that the wrappers return their
+  ! Four C functions themselves, called on the same arrays to show that the wrappers return their
   ! bits (the wrappers pass the arrays' addresses; fortran.drag_table shows the same for drag).
   interface
     integer(c_int) function c_constitutive(law, radial, n, phi, theta, d, rho, e, value, d_phi, d_theta, error) &
@@ -59,6 +62,29 @@ program kinetic_theory_moments
       integer(c_size_t), value :: n, classes, i, k
       real(c_double), intent(in) :: fractions(*), diameters(*)
       real(c_double), intent(out) :: g(*), d_fractions(*)
+    end function
+    integer(c_int) function c_dqmom_sources(node_count, n, nodes, weights, moment_sources, weight_sources, &
+                                            weighted_node_sources, status, condition, error) &
+        bind(C, name='fluidbed_dqmom_sources')
+      import :: c_int, c_size_t, c_double, c_ptr
+      integer(c_int), value :: node_count
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: nodes(*), weights(*), moment_sources(*)
+      real(c_double), intent(out) :: weight_sources(*), weighted_node_sources(*)
+      integer(c_int), intent(out) :: status(*)
+      type(c_ptr), value :: condition, error
+    end function
+    integer(c_int) function c_dqmom_growth_diffusion_sources(node_count, weights_kind, n, nodes, weights, growth_rate, &
+                                                             diffusion_intensity, weight_sources, &
+                                                             weighted_node_sources, status, condition, error) &
+        bind(C, name='fluidbed_dqmom_growth_diffusion_sources')
+      import :: c_int, c_size_t, c_double, c_ptr
+      integer(c_int), value :: node_count, weights_kind
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: nodes(*), weights(*)
+      type(c_ptr), value :: growth_rate, diffusion_intensity, condition, error
+      real(c_double), intent(out) :: weight_sources(*), weighted_node_sources(*)
+      integer(c_int), intent(out) :: status(*)
     end function
   end interface
   integer, parameter :: field = 40, key_length = 8 * (field + 1)
@@ -118,6 +144,7 @@ program kinetic_theory_moments
   call check_elastic(trim(directory) // '/elastic_state_reference.csv')
   call check_moment_table(trim(directory) // '/moments_reference.csv')
   call check_moments()
+  call check_dqmom()
   call check_metadata()
   call check_bad_input()
   print '(a, 5(i0, a))', 'fortran: ', radial_rows, ' radial distribution rows, ', law_rows, &
@@ -876,6 +903,67 @@ contains
       m(j) = sum(weights * nodes**(j - 1))
     end do
   end function
+
+  ! DQMOM sources of three cells of three nodes (the third cell's last two nodes merged), growth as
+  ! point functionals and as moment sources (3 + k) Σ φ ξ^(k−1) G.
+  subroutine check_dqmom()
+    real(c_double) :: xi(3, 3), phi(3, 3), g(3, 3), s(3, 6), a(3, 3), b(3, 3), ca(3, 3), cb(3, 3), condition(3)
+    real(c_double) :: moment_a(3, 3), moment_b(3, 3), bad(3, 2)
+    real(c_double), target :: growth(3, 3)
+    integer(c_int) :: status(3), c_status(3)
+    character(len=:), allocatable :: message
+    integer :: code, c, k
+    xi(1, :) = [75e-6_c_double, 103e-6_c_double, 240e-6_c_double]
+    xi(2, :) = [60e-6_c_double, 130e-6_c_double, 420e-6_c_double]
+    xi(3, :) = [75e-6_c_double, 200e-6_c_double, 200e-6_c_double * (1 + 1e-9_c_double)]
+    phi(1, :) = [0.131_c_double, 0.169_c_double, 0.19_c_double]
+    phi(2, :) = [0.03_c_double, 0.04_c_double, 0.02_c_double]
+    phi(3, :) = [0.2_c_double, 0.1_c_double, 0.3_c_double]
+    g(1, :) = [1e-7_c_double, -2e-7_c_double, 3e-7_c_double]
+    g(2, :) = [2e-8_c_double, 1e-7_c_double, -5e-8_c_double]
+    g(3, :) = [1e-7_c_double, 1e-7_c_double, 1e-7_c_double]
+    growth = g
+    code = fluidbed_dqmom_growth_diffusion_sources(FLUIDBED_DQMOM_VOLUME_FRACTION, xi, phi, a, b, status, &
+                                                   growth_rate=g, condition=condition, message=message)
+    call check(code == FLUIDBED_OK, 'dqmom growth: ' // message)
+    call check(all(status == [FLUIDBED_DQMOM_OK, FLUIDBED_DQMOM_OK, FLUIDBED_DQMOM_MERGED_NODES]), &
+               'dqmom growth: the statuses')
+    call check(all(relative_difference(a(1:2, :), 3 * phi(1:2, :) * g(1:2, :) / xi(1:2, :)) < 1e-14_c_double) .and. &
+               all(relative_difference(b(1:2, :), 4 * phi(1:2, :) * g(1:2, :)) < 1e-14_c_double), &
+               'dqmom growth: c^phi = 3 phi G/xi, c^xi = 4 phi G')
+    call check(all(relative_difference(a(3, :), 3 * phi(3, :) * g(3, :) / xi(3, :)) < 1e-8_c_double), &
+               'dqmom growth: merged nodes keep the growth identity (to their gap)')
+    code = c_dqmom_growth_diffusion_sources(3_c_int, int(FLUIDBED_DQMOM_VOLUME_FRACTION, c_int), 3_c_size_t, xi, phi, &
+                                            c_loc(growth), c_null_ptr, ca, cb, c_status, c_null_ptr, c_null_ptr)
+    call check(code == FLUIDBED_OK .and. all(same_bits(a, ca)) .and. all(same_bits(b, cb)) .and. &
+               all(c_status == status), 'dqmom growth: the wrapper returns the C function''s bits')
+    do c = 1, 3
+      do k = 0, 5
+        s(c, k + 1) = (3 + k) * sum(phi(c, :) * xi(c, :)**(k - 1) * g(c, :))
+      end do
+    end do
+    code = fluidbed_dqmom_sources(xi(1:2, :), phi(1:2, :), s(1:2, :), moment_a(1:2, :), moment_b(1:2, :), &
+                                  status(1:2), condition(1:2), message)
+    call check(code == FLUIDBED_OK .and. all(status(1:2) == FLUIDBED_DQMOM_OK), 'dqmom sources: ' // message)
+    do c = 1, 2
+      call check(all(abs(moment_a(c, :) - a(c, :)) < 8 * epsilon(1.0_c_double) * condition(c) * maxval(abs(a(c, :)))) &
+                 .and. all(abs(moment_b(c, :) - b(c, :)) < 8 * epsilon(1.0_c_double) * condition(c) * &
+                           maxval(abs(b(c, :)))), 'dqmom sources: growth as moments, within the condition number')
+    end do
+    code = c_dqmom_sources(3_c_int, 2_c_size_t, xi(1:2, :), phi(1:2, :), s(1:2, :), ca(1:2, :), cb(1:2, :), &
+                           c_status(1:2), c_null_ptr, c_null_ptr)
+    call check(code == FLUIDBED_OK .and. all(same_bits(moment_a(1:2, :), ca(1:2, :))) .and. &
+               all(same_bits(moment_b(1:2, :), cb(1:2, :))), 'dqmom sources: the wrapper returns the C function''s bits')
+    ! Shapes that do not agree, and a weights kind that is none.
+    code = fluidbed_dqmom_sources(xi, phi, s(:, 1:5), a, b, status, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'dqmom sources: 5 moment sources for 3 nodes')
+    code = fluidbed_dqmom_growth_diffusion_sources(FLUIDBED_DQMOM_NUMBER_DENSITY, xi, phi, a, b, status, &
+                                                   diffusion_intensity=bad, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'dqmom growth: a diffusion intensity of 2 nodes for 3')
+    code = fluidbed_dqmom_growth_diffusion_sources(7, xi, phi, a, b, status, growth_rate=g, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT .and. message == 'fluidbed: unknown fluidbed_dqmom_weights 7', &
+               'dqmom growth: weights kind 7: ' // message)
+  end subroutine
 
   subroutine check_moments()
     real(c_double) :: m(4, 4), nodes(4, 2), weights(4, 2), corrected(4, 4), failing(4), again(3, 4)

@@ -396,6 +396,48 @@ FLUIDBED_C_API fluidbed_status fluidbed_correct_moments(int moment_count, size_t
                                                         double* corrected, int* status, int* realizable_moments,
                                                         fluidbed_error* error);
 
+/* A cell's outcome of the DQMOM source solve (the C++ library's moments::dqmom::SourceStatus). */
+typedef enum fluidbed_dqmom_status {
+  FLUIDBED_DQMOM_OK = 0,             /* every node distinct: the full system solved */
+  FLUIDBED_DQMOM_MERGED_NODES = 1,   /* nodes closer than (1000 eps)^(1/3) relative were merged (docs/closures/dqmom.md) */
+  FLUIDBED_DQMOM_INVALID_INPUT = 2,  /* a node not finite and positive, or a weight negative or not finite */
+  FLUIDBED_DQMOM_MAX_ENUM = 0x7fffffff
+} fluidbed_dqmom_status;
+
+/* What the DQMOM weights are (the C++ moments::dqmom::Weights): volume fractions of a
+ * diameter-distributed phase (seed 000) or number densities (Marchisio & Fox 2005). */
+typedef enum fluidbed_dqmom_weights {
+  FLUIDBED_DQMOM_VOLUME_FRACTION = 0,
+  FLUIDBED_DQMOM_NUMBER_DENSITY = 1,
+  FLUIDBED_DQMOM_WEIGHTS_MAX_ENUM = 0x7fffffff
+} fluidbed_dqmom_weights;
+
+/* DQMOM source terms of n cells of node_count nodes each (1 to FLUIDBED_MAX_NODES): the sources
+ * c^a of the weights and c^xi of the weighted nodes that make the moments M_k = sum a_i xi_i^k,
+ * k = 0 ... 2 node_count - 1, change at the rates moment_sources (any kernel of moments:
+ * aggregation, breakage, nucleation, ...). Node i of cell c at nodes[i n + c], its weight at
+ * weights[i n + c], moment source k at moment_sources[k n + c]; writes weight_sources[i n + c],
+ * weighted_node_sources[i n + c], the cell's status[c] (a fluidbed_dqmom_status) and, if not NULL,
+ * the condition number of the system solved, condition[c] (about log10 of it digits are lost).
+ * The C++ moments::dqmom::solve_batched, bit for bit. A cell's outcome is its status, never an
+ * error; a node count out of range or a NULL array is FLUIDBED_INVALID_ARGUMENT. */
+FLUIDBED_C_API fluidbed_status fluidbed_dqmom_sources(int node_count, size_t n, const double* nodes,
+                                                      const double* weights, const double* moment_sources,
+                                                      double* weight_sources, double* weighted_node_sources,
+                                                      int* status, double* condition, fluidbed_error* error);
+
+/* DQMOM source terms of growth (node i of cell c growing at growth_rate[i n + c], m/s) and of
+ * diffusion (the diffusion-induced sources of seed 000 eqs 6.18-6.23, intensity
+ * C_i = D phi_i |grad xi_i|^2 at diffusion_intensity[i n + c]), solved as point functionals: exact to
+ * rounding whatever the conditioning (docs/closures/dqmom.md). Either array may be NULL (no such
+ * source). weights_kind says what the weights are (growth differs: 3 phi G/xi and 4 phi G for
+ * volume fractions, 0 and w G for number densities). Layout and outputs as fluidbed_dqmom_sources;
+ * the C++ moments::dqmom::System with growth_terms and diffusion_terms, bit for bit. */
+FLUIDBED_C_API fluidbed_status fluidbed_dqmom_growth_diffusion_sources(
+    int node_count, fluidbed_dqmom_weights weights_kind, size_t n, const double* nodes, const double* weights,
+    const double* growth_rate, const double* diffusion_intensity, double* weight_sources,
+    double* weighted_node_sources, int* status, double* condition, fluidbed_error* error);
+
 #ifdef __cplusplus
 }
 #endif

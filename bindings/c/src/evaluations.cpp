@@ -29,6 +29,20 @@ fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
   throw InvalidArgument("fluidbed: unknown fluidbed_buoyancy " + std::to_string(static_cast<int>(convention)));
 }
 
+static_assert(FLUIDBED_DQMOM_OK == int(fluidbed::moments::dqmom::SourceStatus::ok) &&
+                  FLUIDBED_DQMOM_MERGED_NODES == int(fluidbed::moments::dqmom::SourceStatus::merged_nodes) &&
+                  FLUIDBED_DQMOM_INVALID_INPUT == int(fluidbed::moments::dqmom::SourceStatus::invalid_input),
+              "fluidbed_dqmom_status follows moments::dqmom::SourceStatus");
+
+fluidbed::moments::dqmom::Weights weights_of(fluidbed_dqmom_weights kind) {
+  switch (kind) {
+    case FLUIDBED_DQMOM_VOLUME_FRACTION: return fluidbed::moments::dqmom::Weights::volume_fraction;
+    case FLUIDBED_DQMOM_NUMBER_DENSITY: return fluidbed::moments::dqmom::Weights::number_density;
+    default: break;
+  }
+  throw InvalidArgument("fluidbed: unknown fluidbed_dqmom_weights " + std::to_string(static_cast<int>(kind)));
+}
+
 fluidbed::moments::Support support_of(fluidbed_support support) {
   switch (support) {
     case FLUIDBED_SUPPORT_POSITIVE_HALF_LINE: return fluidbed::moments::Support::positive_half_line;
@@ -206,6 +220,28 @@ extern "C" fluidbed_status fluidbed_correct_moments(int moment_count, size_t n, 
     const fluidbed::moments::CorrectionOptions<double> cpp{o.protected_moments, o.max_iterations,
                                                            o.degenerate_tolerance};
     fluidbed::bindings::correct_moments(moment_count, n, moments, cpp, corrected, status, realizable_moments);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_dqmom_sources(int node_count, size_t n, const double* nodes, const double* weights,
+                                                  const double* moment_sources, double* weight_sources,
+                                                  double* weighted_node_sources, int* status, double* condition,
+                                                  fluidbed_error* error) {
+  return guarded(error, [&] {
+    fluidbed::bindings::dqmom_sources(node_count, n, nodes, weights, moment_sources, weight_sources,
+                                      weighted_node_sources, status, condition);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_dqmom_growth_diffusion_sources(
+    int node_count, fluidbed_dqmom_weights weights_kind, size_t n, const double* nodes, const double* weights,
+    const double* growth_rate, const double* diffusion_intensity, double* weight_sources,
+    double* weighted_node_sources, int* status, double* condition, fluidbed_error* error) {
+  return guarded(error, [&] {
+    const auto form = weights_of(weights_kind);
+    fluidbed::bindings::dqmom_growth_diffusion_sources(node_count, form, n, nodes, weights, growth_rate,
+                                                       diffusion_intensity, weight_sources, weighted_node_sources,
+                                                       status, condition);
   });
 }
 

@@ -29,7 +29,8 @@ __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidAr
            "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
            "ElasticModulus", "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
            "FrictionalStress", "MixtureRadialDistribution", "GasExchangeSource", "SolidSolidDrag", "CONVENTIONS",
-           "invert", "INVERSION_STATUSES", "realizability", "correct", "CORRECTION_STATUSES"]
+           "invert", "INVERSION_STATUSES", "realizability", "correct", "CORRECTION_STATUSES", "dqmom_sources",
+           "dqmom_growth_diffusion_sources", "DQMOM_STATUSES"]
 
 
 class Error(ValueError):
@@ -425,6 +426,70 @@ def correct(moments, *, protected_moments=None, max_iterations=None, degenerate_
     corrected, status, realizable = _module(dtype).correct_moments(sets, protected_moments, max_iterations,
                                                                    degenerate_tolerance)
     return Correction(corrected.T.reshape(shape), status.reshape(shape[:-1]), realizable.reshape(shape[:-1]))
+
+
+#: A cell's outcome of the DQMOM source solve (the C++ library's moments::dqmom::SourceStatus).
+DQMOM_STATUSES = ("ok", "merged_nodes", "invalid_input")
+
+DqmomSources = namedtuple("DqmomSources", "weight weighted_node status condition")
+
+
+def _dqmom_fields(function, nodes, weights, *others):
+    """(dtype, the cells' shape, nodes, weights and the others as (count, cells) arrays) of (..., count) inputs."""
+    x = np.asarray(nodes)
+    if x.ndim < 1 or not 1 <= x.shape[-1] <= 8:
+        raise InvalidArgument(f"fluidbed: {function}: the last axis must hold 1 to 8 nodes, not shape {x.shape}")
+    dtype = np.float32 if x.dtype == np.float32 else np.float64
+    fields = []
+    for name, array, count in (("weights", weights, x.shape[-1]),) + others:
+        if array is None:
+            fields.append(None)
+            continue
+        a = np.asarray(array)
+        if a.shape != x.shape[:-1] + (count,):
+            raise InvalidArgument(f"fluidbed: {function}: {name} must have shape {x.shape[:-1] + (count,)}, not {a.shape}")
+        fields.append(np.ascontiguousarray(a.reshape(-1, count).T, dtype=dtype))
+    return dtype, x.shape, np.ascontiguousarray(x.reshape(-1, x.shape[-1]).T, dtype=dtype), fields
+
+
+def _dqmom_result(shape, r):
+    a, b, status, condition = r
+    return DqmomSources(a.T.reshape(shape), b.T.reshape(shape), status.reshape(shape[:-1]),
+                        condition.reshape(shape[:-1]))
+
+
+def dqmom_sources(nodes, weights, moment_sources):
+    """DQMOM source terms: the sources c^a of the weights and c^ξ of the weighted nodes (each (..., N))
+    that make the moments M_k = Σ a_i ξ_i^k, k = 0 … 2N − 1, change at the rates ``moment_sources``
+    (..., 2N) (any kernel of moments: aggregation, breakage, nucleation). ``nodes`` and ``weights``
+    are (..., N), N from 1 to 8, the last axis one cell's quadrature (weights only place merged
+    nodes). Returns a ``DqmomSources`` of c^a, c^ξ, the status (indices into DQMOM_STATUSES) and the
+    condition number of the system solved (about log10 of it digits are lost). The C++ library's
+    moments::dqmom::solve_batched, bit for bit; a cell's outcome is its status, never an exception."""
+    x = np.asarray(nodes)
+    dtype, shape, xs, (ws, ss) = _dqmom_fields("dqmom_sources", nodes, weights,
+                                               ("moment_sources", moment_sources, 2 * x.shape[-1] if x.ndim else 0))
+    return _dqmom_result(shape, _module(dtype).dqmom_sources(xs, ws, ss))
+
+
+def dqmom_growth_diffusion_sources(nodes, weights, *, weights_kind="volume_fraction", growth_rate=None,
+                                   diffusion_intensity=None):
+    """DQMOM source terms of growth (node i growing at ``growth_rate`` [m/s], (..., N)) and of the
+    diffusion-induced sources (intensity 𝒞_i = 𝒟 φ_i |∇ξ_i|², ``diffusion_intensity`` (..., N); seed 000
+    eqs 6.18–6.23), each optional, solved as point functionals: exact to rounding whatever the
+    conditioning. ``weights_kind`` is "volume_fraction" (growth gives c^a = 3φG/ξ, c^ξ = 4φG) or
+    "number_density" (0 and wG). Returns a ``DqmomSources`` as ``dqmom_sources``; the C++ library's
+    moments::dqmom::System with growth_terms and diffusion_terms, bit for bit."""
+    if weights_kind not in ("volume_fraction", "number_density"):
+        raise InvalidArgument(f"fluidbed: weights_kind must be 'volume_fraction' or 'number_density', not "
+                              f"{weights_kind!r}")
+    x = np.asarray(nodes)
+    count = x.shape[-1] if x.ndim else 0
+    dtype, shape, xs, (ws, gs, cs) = _dqmom_fields("dqmom_growth_diffusion_sources", nodes, weights,
+                                                   ("growth_rate", growth_rate, count),
+                                                   ("diffusion_intensity", diffusion_intensity, count))
+    return _dqmom_result(shape, _module(dtype).dqmom_growth_diffusion_sources(weights_kind == "number_density", xs, ws,
+                                                                              gs, cs))
 
 
 def invert(moments, *, support="positive_half_line"):

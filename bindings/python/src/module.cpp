@@ -191,6 +191,53 @@ py::tuple correct_moments(const Array<T>& moments_in, std::optional<int> protect
   return py::make_tuple(corrected, status, realizable);
 }
 
+// DQMOM sources of cells whose nodes and weights are the rows of (N, cells) arrays; moment sources
+// (2N, cells), or growth rates and diffusion intensities (N, cells) each optional.
+template <class T>
+py::ssize_t dqmom_node_rows(const Array<T>& nodes, const Array<T>& weights) {
+  if (nodes.ndim() != 2 || weights.ndim() != 2 || nodes.shape(0) != weights.shape(0) ||
+      nodes.shape(1) != weights.shape(1))
+    guarded([] { throw fb::InvalidArgument("fluidbed: the nodes and weights must be (nodes, cells) alike"); });
+  return nodes.shape(0);
+}
+
+template <class T>
+py::tuple dqmom_sources(const Array<T>& nodes, const Array<T>& weights, const Array<T>& sources) {
+  const py::ssize_t count = dqmom_node_rows(nodes, weights), n = nodes.shape(1);
+  if (sources.ndim() != 2 || sources.shape(0) != 2 * count || sources.shape(1) != n)
+    guarded([] { throw fb::InvalidArgument("fluidbed: dqmom_sources: the moment sources must be (2 nodes, cells)"); });
+  Array<T> a({count, n}), b({count, n}), condition(n);
+  py::array_t<int> status(n);
+  T *pa = a.mutable_data(), *pb = b.mutable_data(), *pc = condition.mutable_data();
+  int* st = status.mutable_data();
+  guarded([&] {
+    fb::dqmom_sources<T>(static_cast<int>(count), static_cast<std::size_t>(n), nodes.data(), weights.data(),
+                         sources.data(), pa, pb, st, pc);
+  });
+  return py::make_tuple(a, b, status, condition);
+}
+
+template <class T>
+py::tuple dqmom_growth_diffusion_sources(bool number_density, const Array<T>& nodes, const Array<T>& weights,
+                                         const std::optional<Array<T>>& growth, const std::optional<Array<T>>& intensity) {
+  const py::ssize_t count = dqmom_node_rows(nodes, weights), n = nodes.shape(1);
+  for (const auto* field : {&growth, &intensity})
+    if (*field && ((*field)->ndim() != 2 || (*field)->shape(0) != count || (*field)->shape(1) != n))
+      guarded([] { throw fb::InvalidArgument("fluidbed: growth rates and diffusion intensities must be (nodes, cells)"); });
+  Array<T> a({count, n}), b({count, n}), condition(n);
+  py::array_t<int> status(n);
+  T *pa = a.mutable_data(), *pb = b.mutable_data(), *pc = condition.mutable_data();
+  int* st = status.mutable_data();
+  guarded([&] {
+    fb::dqmom_growth_diffusion_sources<T>(
+        static_cast<int>(count),
+        number_density ? fluidbed::moments::dqmom::Weights::number_density : fluidbed::moments::dqmom::Weights::volume_fraction,
+        static_cast<std::size_t>(n), nodes.data(), weights.data(), growth ? growth->data() : nullptr,
+        intensity ? intensity->data() : nullptr, pa, pb, st, pc);
+  });
+  return py::make_tuple(a, b, status, condition);
+}
+
 // g_ik of cells whose classes are the rows of fractions and diameters (class m of cell c at [m, c]).
 template <class T>
 py::tuple mixture_radial_distribution(const fb::NamedClosure& law, std::size_t i, std::size_t k,
@@ -252,6 +299,9 @@ template <class T>
 void define_kernels(py::module_& m) {
   m.def("moment_realizability", &moment_realizability<T>);
   m.def("correct_moments", &correct_moments<T>);
+  m.def("dqmom_sources", &dqmom_sources<T>);
+  m.def("dqmom_growth_diffusion_sources", &dqmom_growth_diffusion_sources<T>, py::arg("number_density"),
+        py::arg("nodes"), py::arg("weights"), py::arg("growth").none(true), py::arg("intensity").none(true));
   m.def("mixture_radial_distribution", &mixture_radial_distribution<T>);
   m.def("solid_solid_drag", &solid_solid_drag<T>);
   m.def("gas_exchange_source", &gas_exchange_source<T>, py::arg("law"), py::arg("radial").none(true),

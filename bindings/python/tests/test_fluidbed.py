@@ -543,3 +543,47 @@ def test_friction_rows_bit_for_bit_with_the_c_interface():
                 assert same_bits(python.value, out[0]) and same_bits(python.derivative, out[1])
         compared += 1
     assert compared == 1253
+
+
+def test_dqmom_sources_bit_for_bit_with_c_growth_identity_shapes_and_errors():
+    ints = ctypes.POINTER(ctypes.c_int)
+    rng = np.random.default_rng(17)
+    for count in range(1, 9):
+        cells = 23
+        nodes = 40e-6 * 1.6 ** np.arange(count) * (1 + 0.01 * rng.random((cells, 1)))
+        weights = 0.05 + 0.3 * rng.random((cells, count))
+        sources = (-2e-4) ** np.arange(2 * count) * (1 + rng.random((cells, 2 * count)))
+        growth = 1e-7 * rng.uniform(-1, 1, (cells, count))
+        python = fluidbed.dqmom_sources(nodes, weights, sources)
+        functional = fluidbed.dqmom_growth_diffusion_sources(nodes, weights, growth_rate=growth)
+        # The C interface on the same (count, cells) fields.
+        x, w, s, g = (np.ascontiguousarray(a.T) for a in (nodes, weights, sources, growth))
+        for r, call in ((python, lambda a, b, st, k: C.fluidbed_dqmom_sources(
+                            count, ctypes.c_size_t(cells), ptr(x), ptr(w), ptr(s), ptr(a), ptr(b),
+                            st.ctypes.data_as(ints), ptr(k), None)),
+                        (functional, lambda a, b, st, k: C.fluidbed_dqmom_growth_diffusion_sources(
+                            count, 0, ctypes.c_size_t(cells), ptr(x), ptr(w), ptr(g), None, ptr(a), ptr(b),
+                            st.ctypes.data_as(ints), ptr(k), None))):
+            a, b, k = np.empty((count, cells)), np.empty((count, cells)), np.empty(cells)
+            status = np.empty(cells, dtype=np.intc)
+            assert call(a, b, status, k) == 0
+            assert same_bits(r.weight, a.T) and same_bits(r.weighted_node, b.T) and same_bits(r.condition, k)
+            assert np.array_equal(r.status, status)
+        # Pure growth: c^phi = 3 phi G / xi and c^xi = 4 phi G whatever the conditioning.
+        assert np.allclose(functional.weight, 3 * weights * growth / nodes, rtol=1e-14, atol=0)
+        assert np.allclose(functional.weighted_node, 4 * weights * growth, rtol=1e-14, atol=0)
+        assert all(fluidbed.DQMOM_STATUSES[st] == "ok" for st in python.status)
+    # Broadcast shapes, float32, number densities, statuses, errors.
+    one = fluidbed.dqmom_growth_diffusion_sources(np.array([75e-6, 103e-6], dtype=np.float32),
+                                                  np.array([1e9, 2e9], dtype=np.float32), weights_kind="number_density",
+                                                  growth_rate=np.array([1e-7, 1e-7], dtype=np.float32))
+    assert one.weight.dtype == np.float32 and one.weight.shape == (2,) and one.status.shape == ()
+    assert np.allclose(one.weighted_node, [100, 200], rtol=1e-6)
+    merged = fluidbed.dqmom_sources([[1e-4, 1e-4]], [[0.1, 0.2]], [[1, 2e-4, 3e-8, 4e-12]])
+    assert fluidbed.DQMOM_STATUSES[merged.status[0]] == "merged_nodes"
+    with pytest.raises(fluidbed.InvalidArgument):
+        fluidbed.dqmom_sources([1e-4, 2e-4], [0.1, 0.2], [1, 2, 3])
+    with pytest.raises(fluidbed.InvalidArgument):
+        fluidbed.dqmom_growth_diffusion_sources([1e-4, 2e-4], [0.1, 0.2], weights_kind="mass")
+    with pytest.raises(fluidbed.InvalidArgument):
+        fluidbed.dqmom_sources(np.full(9, 1e-4), np.ones(9), np.ones(18))
