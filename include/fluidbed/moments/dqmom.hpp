@@ -328,7 +328,9 @@ class System {
     const auto& x = nodes_.center;
     T inverse_norm(0);
     for (int c = 0; c < n; ++c) {
-      std::array<T, N> lagrange{};
+      // One coefficient more than ℓ_c needs (degree n − 1 <= N − 1): GCC 12 at -O2 cannot see that
+      // the loop below never runs for N = 1 and reports its index 1 as out of bounds.
+      std::array<T, N + 1> lagrange{};
       lagrange[0] = T(1);
       T slope(0);
       int degree = 0;
