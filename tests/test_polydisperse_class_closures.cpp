@@ -29,6 +29,8 @@ using polydisperse::MultiFluidState;
 
 namespace {
 
+constexpr double machine_epsilon = std::numeric_limits<double>::epsilon();
+
 constexpr std::size_t N = 4;
 using State = MultiFluidState<double, N>;
 using drag::Buoyancy;
@@ -163,7 +165,8 @@ TEST_CASE("one class is the monodisperse law, value and derivatives, for every l
                 if (std::isinf(want.d_slip))
                   CHECK(got.d_slip == want.d_slip);
                 else
-                  CHECK(std::abs(got.d_slip - correction * want.d_slip) <= 4e-16 * std::abs(want.d_slip));
+                  // (a few ulp: with FMA contraction, -march=native, the chain rule's last bits move)
+                  CHECK(std::abs(got.d_slip - correction * want.d_slip) <= 16 * machine_epsilon * std::abs(want.d_slip));
                 CHECK(relative(d.gas_particle(0).force_slip_derivative(b),
                                correction * beta_d.force_slip_derivative(b)) < 1e-14);
               }
@@ -296,11 +299,13 @@ TEST_CASE("derivatives: against a dual-number evaluation of the formula and cent
       CHECK(d.solid_solid(k, i).d_relative_speed == d.solid_solid(i, k).d_relative_speed);
     }
   }
-  // The values of with_derivatives are those of the hot path.
+  // The values of with_derivatives are those of the hot path (ζ through dual numbers: to a few ulp
+  // where FMA contraction, -march=native, rounds the two paths differently).
   const auto values = d.coefficients();
   for (std::size_t i = 0; i < nu; ++i) {
     CHECK(values.gas_particle(i).classical() == c.gas_particle(i).classical());
-    for (std::size_t k = 0; k < nu; ++k) CHECK(values.solid_solid(i, k) == c.solid_solid(i, k));
+    for (std::size_t k = 0; k < nu; ++k)
+      CHECK(std::abs(values.solid_solid(i, k) - c.solid_solid(i, k)) <= 4 * machine_epsilon * c.solid_solid(i, k));
   }
 }
 
