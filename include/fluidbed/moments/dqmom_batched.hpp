@@ -231,7 +231,8 @@ void solve_blocks(const SourceBatch<T, N>& batch, const Options& options) {
 // cells (condition: that many, or none).
 template <class T, int N>
 void solve_batched(const SourceBatch<T, N>& batch, const Options& options = {}) {
-  constexpr int lanes = 32 / int(sizeof(T)) > 2 ? 32 / int(sizeof(T)) : 2;  // 256 bits: Eigen's lane operations stay inlined (at 512 GCC outlines them, 1.5-2x slower)
+  // 256 bits: Eigen's lane operations stay inlined (at 512 GCC outlines them, 1.5-2x slower).
+  constexpr int lanes = 32 / int(sizeof(T)) > 2 ? 32 / int(sizeof(T)) : 2;
   if (batch.condition.empty())
     detail::solve_blocks<T, N, lanes, false>(batch, options);
   else

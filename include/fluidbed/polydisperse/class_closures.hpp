@@ -157,12 +157,30 @@ struct SolidSolidDerivatives {
 template <class T, std::size_t N>
 class ClassCoefficientsWithDerivatives;
 
-// The coefficients of one cell. The gas–particle β_i are given only through
-// drag::DragCoefficient, whose caller names the convention.
+namespace detail {
+
+// |a − b|.
+template <class T>
+FLUIDBED_HOST_DEVICE T distance(const Vector3<T>& a, const Vector3<T>& b) {
+  using std::sqrt;
+  const Vector3<T> d = difference(a, b);
+  return sqrt(dot(d, d));
+}
+
+// What both sets of coefficients carry besides the coefficients: the drag law's native
+// convention, the class count, ε, the slips and the pairs' relative speeds, from the state.
 template <class T, std::size_t N>
-class ClassCoefficients {
+class ClassKinematics {
  public:
-  constexpr ClassCoefficients() = default;
+  constexpr ClassKinematics() = default;
+  FLUIDBED_HOST_DEVICE ClassKinematics(const MultiFluidState<T, N>& s, drag::Buoyancy native)
+      : native_(native), classes_(s.classes), voidage_(polydisperse::voidage(s)) {
+    for (std::size_t i = 0; i < s.classes; ++i) {
+      slip_[i] = distance(s.fluid_velocity, s.velocities[i]);
+      for (std::size_t k = i + 1; k < s.classes; ++k)
+        speed_[i][k] = speed_[k][i] = distance(s.velocities[k], s.velocities[i]);
+    }
+  }
 
   FLUIDBED_HOST_DEVICE constexpr std::size_t classes() const { return classes_; }
   // ε = 1 − Σ φ_i.
@@ -171,9 +189,27 @@ class ClassCoefficients {
   FLUIDBED_HOST_DEVICE constexpr T slip(std::size_t i) const { return slip_[i]; }
   // |v_k − v_i|.
   FLUIDBED_HOST_DEVICE constexpr T relative_speed(std::size_t i, std::size_t k) const { return speed_[i][k]; }
+
+ protected:
+  drag::Buoyancy native_ = drag::Buoyancy::classical;
+  std::size_t classes_ = 0;
+  T voidage_{};
+  std::array<T, N> slip_{};
+  std::array<std::array<T, N>, N> speed_{};
+};
+
+}  // namespace detail
+
+// The coefficients of one cell. The gas–particle β_i are given only through
+// drag::DragCoefficient, whose caller names the convention.
+template <class T, std::size_t N>
+class ClassCoefficients : public detail::ClassKinematics<T, N> {
+ public:
+  constexpr ClassCoefficients() = default;
+
   // β_i: the force of the gas on class i per unit suspension volume is β_i (u − v_i).
   FLUIDBED_HOST_DEVICE constexpr drag::DragCoefficient<T> gas_particle(std::size_t i) const {
-    return drag::DragCoefficient<T>(native_, beta_[i], voidage_);
+    return drag::DragCoefficient<T>(this->native_, beta_[i], this->voidage_);
   }
   // ζ_ik = ζ_ki: the force of class k on class i per unit suspension volume is ζ_ik (v_k − v_i).
   FLUIDBED_HOST_DEVICE constexpr T solid_solid(std::size_t i, std::size_t k) const { return zeta_[i][k]; }
@@ -183,39 +219,29 @@ class ClassCoefficients {
   friend struct ClassClosures;
   friend class ClassCoefficientsWithDerivatives<T, N>;
 
-  drag::Buoyancy native_ = drag::Buoyancy::classical;
-  std::size_t classes_ = 0;
-  T voidage_{};
-  std::array<T, N> slip_{};
+  FLUIDBED_HOST_DEVICE constexpr explicit ClassCoefficients(const detail::ClassKinematics<T, N>& kinematics)
+      : detail::ClassKinematics<T, N>(kinematics) {}
+
   std::array<T, N> beta_{};  // native convention
-  std::array<std::array<T, N>, N> speed_{};
   std::array<std::array<T, N>, N> zeta_{};
 };
 
 // The coefficients of one cell with their derivatives.
 template <class T, std::size_t N>
-class ClassCoefficientsWithDerivatives {
+class ClassCoefficientsWithDerivatives : public detail::ClassKinematics<T, N> {
  public:
   constexpr ClassCoefficientsWithDerivatives() = default;
 
-  FLUIDBED_HOST_DEVICE constexpr std::size_t classes() const { return classes_; }
-  FLUIDBED_HOST_DEVICE constexpr T voidage() const { return voidage_; }
-  FLUIDBED_HOST_DEVICE constexpr T slip(std::size_t i) const { return slip_[i]; }
-  FLUIDBED_HOST_DEVICE constexpr T relative_speed(std::size_t i, std::size_t k) const { return speed_[i][k]; }
   FLUIDBED_HOST_DEVICE constexpr GasParticleCoefficientWithDerivatives<T, N> gas_particle(std::size_t i) const {
-    return GasParticleCoefficientWithDerivatives<T, N>(native_, beta_[i], voidage_, slip_[i], classes_);
+    return GasParticleCoefficientWithDerivatives<T, N>(this->native_, beta_[i], this->voidage_, this->slip_[i],
+                                                       this->classes_);
   }
   FLUIDBED_HOST_DEVICE constexpr const SolidSolidDerivatives<T, N>& solid_solid(std::size_t i, std::size_t k) const {
     return zeta_[i][k];
   }
   // The values alone.
   FLUIDBED_HOST_DEVICE constexpr ClassCoefficients<T, N> coefficients() const {
-    ClassCoefficients<T, N> r;
-    r.native_ = native_;
-    r.classes_ = classes_;
-    r.voidage_ = voidage_;
-    r.slip_ = slip_;
-    r.speed_ = speed_;
+    ClassCoefficients<T, N> r(*this);
     for (std::size_t i = 0; i < N; ++i) {
       r.beta_[i] = beta_[i].value;
       for (std::size_t k = 0; k < N; ++k) r.zeta_[i][k] = zeta_[i][k].value;
@@ -227,12 +253,11 @@ class ClassCoefficientsWithDerivatives {
   template <class, class>
   friend struct ClassClosures;
 
-  drag::Buoyancy native_ = drag::Buoyancy::classical;
-  std::size_t classes_ = 0;
-  T voidage_{};
-  std::array<T, N> slip_{};
+  FLUIDBED_HOST_DEVICE constexpr explicit ClassCoefficientsWithDerivatives(
+      const detail::ClassKinematics<T, N>& kinematics)
+      : detail::ClassKinematics<T, N>(kinematics) {}
+
   std::array<GasParticleDerivatives<T, N>, N> beta_{};  // native convention
-  std::array<std::array<T, N>, N> speed_{};
   std::array<std::array<SolidSolidDerivatives<T, N>, N>, N> zeta_{};
 };
 
@@ -310,14 +335,6 @@ std::string describe_state(const MultiFluidState<T, N>& s) {
          "}";
 }
 
-// |a − b|.
-template <class T>
-FLUIDBED_HOST_DEVICE T distance(const Vector3<T>& a, const Vector3<T>& b) {
-  using std::sqrt;
-  const Vector3<T> d = difference(a, b);
-  return sqrt(dot(d, d));
-}
-
 // The voidage at which the per-class law is evaluated: ε, or the largest T below 1 where ε = 1
 // (β_law/(1 − ε) is 0/0 there).
 template <class T>
@@ -361,26 +378,19 @@ struct ClassClosures {
   template <class T, std::size_t N>
   FLUIDBED_HOST_DEVICE ClassCoefficients<T, N> operator()(const MultiFluidState<T, N>& s) const {
     FLUIDBED_EXPECTS(detail::within(s) && parameters_within<T>());
-    ClassCoefficients<T, N> r;
-    r.native_ = Drag::native_buoyancy;
-    r.classes_ = s.classes;
-    r.voidage_ = voidage(s);
-    const T law_voidage = detail::law_voidage(r.voidage_);
+    ClassCoefficients<T, N> r(detail::ClassKinematics<T, N>(s, Drag::native_buoyancy));
+    const T law_voidage = detail::law_voidage(r.voidage());
     const T solids = T(1) - law_voidage;
     for (std::size_t i = 0; i < s.classes; ++i) {
-      r.slip_[i] = detail::distance(s.fluid_velocity, s.velocities[i]);
-      const T beta = drag_law(drag::DragState<T>{law_voidage, r.slip_[i], s.fluid, s.diameters[i]})
+      const T beta = drag_law(drag::DragState<T>{law_voidage, r.slip(i), s.fluid, s.diameters[i]})
                          .in(Drag::native_buoyancy);
       r.beta_[i] = s.volume_fractions[i] * (beta / solids);
     }
     const std::span<const T> fractions(s.volume_fractions.data(), s.classes);
     const std::span<const T> diameters(s.diameters.data(), s.classes);
     for (std::size_t i = 0; i < s.classes; ++i)
-      for (std::size_t k = i + 1; k < s.classes; ++k) {
-        const T speed = detail::distance(s.velocities[k], s.velocities[i]);
-        r.speed_[i][k] = r.speed_[k][i] = speed;
-        r.zeta_[i][k] = r.zeta_[k][i] = pair_drag(fractions, diameters, s.densities, i, k, speed);
-      }
+      for (std::size_t k = i + 1; k < s.classes; ++k)
+        r.zeta_[i][k] = r.zeta_[k][i] = pair_drag(fractions, diameters, s.densities, i, k, r.relative_speed(i, k));
     return r;
   }
 
@@ -393,16 +403,12 @@ struct ClassClosures {
   FLUIDBED_HOST_DEVICE ClassCoefficientsWithDerivatives<T, N> with_derivatives(const MultiFluidState<T, N>& s) const {
     FLUIDBED_EXPECTS(detail::within(s) && parameters_within<T>());
     using fluidbed::detail::times;
-    ClassCoefficientsWithDerivatives<T, N> r;
-    r.native_ = Drag::native_buoyancy;
-    r.classes_ = s.classes;
-    r.voidage_ = voidage(s);
-    const T law_voidage = detail::law_voidage(r.voidage_);
+    ClassCoefficientsWithDerivatives<T, N> r(detail::ClassKinematics<T, N>(s, Drag::native_buoyancy));
+    const T law_voidage = detail::law_voidage(r.voidage());
     const T solids = T(1) - law_voidage;
     for (std::size_t i = 0; i < s.classes; ++i) {
-      r.slip_[i] = detail::distance(s.fluid_velocity, s.velocities[i]);
       const drag::DragDerivatives<T> law =
-          drag_law.with_derivatives(drag::DragState<T>{law_voidage, r.slip_[i], s.fluid, s.diameters[i]})
+          drag_law.with_derivatives(drag::DragState<T>{law_voidage, r.slip(i), s.fluid, s.diameters[i]})
               .in(Drag::native_buoyancy);
       const T per_fraction = law.value / solids;                       // B_i
       const T per_fraction_d_voidage = (law.d_voidage + per_fraction) / solids;  // ∂B_i/∂ε
@@ -420,9 +426,7 @@ struct ClassClosures {
     const std::span<const T> diameters(s.diameters.data(), s.classes);
     for (std::size_t i = 0; i < s.classes; ++i)
       for (std::size_t k = i + 1; k < s.classes; ++k) {
-        const T speed = detail::distance(s.velocities[k], s.velocities[i]);
-        r.speed_[i][k] = r.speed_[k][i] = speed;
-        const D zeta = pair_drag(fractions, diameters, s.densities, i, k, D::variable(speed, int(N)));
+        const D zeta = pair_drag(fractions, diameters, s.densities, i, k, D::variable(r.relative_speed(i, k), int(N)));
         SolidSolidDerivatives<T, N>& z = r.zeta_[i][k];
         z.value = zeta.value;
         z.d_relative_speed = zeta.derivative[N];
