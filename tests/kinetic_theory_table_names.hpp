@@ -42,7 +42,9 @@ inline const std::vector<TableName> radial_distribution_names{
     {"ogawa", "Ogawa"},
     {"gidaspow", "GidaspowRadialDistribution"},
     {"ma_ahmadi", "MaAhmadi"},
-    {"lathouwers_bellan", "LathouwersBellan"}};
+    {"lathouwers_bellan", "LathouwersBellan"},
+    {"song_stratt_mason", "SongStrattMason"},
+    {"tobochnik_chapin", "TobochnikChapin"}};
 
 // The laws law(φ, Θ, g0, material), as "function:author".
 inline const std::vector<TableName> constitutive_names{
@@ -56,7 +58,9 @@ inline const std::vector<TableName> constitutive_names{
     {"conductivity:gidaspow", "GidaspowConductivity"},
     {"conductivity:syamlal", "SyamlalConductivity"},
     {"conductivity:hrenya_sinclair", "HrenyaSinclairConductivity"},
-    {"dissipation:lun", "LunDissipation"}};
+    {"dissipation:lun", "LunDissipation"},
+    {"shear_viscosity:enskog", "EnskogViscosity"},
+    {"conductivity:enskog", "EnskogConductivity"}};
 
 inline std::string library_name(const std::vector<TableName>& names, const std::string& table) {
   for (const TableName& n : names)

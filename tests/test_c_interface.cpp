@@ -299,8 +299,8 @@ TEST_CASE("C interface: every one-class kinetic-theory reference row bit for bit
         std::type_identity<kt::Dissipations>{});
     ++constitutive_rows;
   }
-  CHECK(radial_rows == 191);
-  CHECK(constitutive_rows == 1092);
+  CHECK(radial_rows == 214);
+  CHECK(constitutive_rows == 1260);
 
   // Friction: the Johnson-Jackson and Schaeffer pressures, Schaeffer's viscosity of either
   // pressure, and the Srivastava-Sundaresan stress, with the table's parameters.

@@ -86,12 +86,12 @@ void check_message(const std::string& law_name, const std::string& argument, con
 }  // namespace
 
 TEST_CASE("kinetic-theory registries: unique names, lookup, unknown names listed") {
-  check_registry<RadialDistributions>(8);
+  check_registry<RadialDistributions>(10);
   check_registry<MixtureRadialDistributions>(3);
   check_registry<GranularPressures>(3);
-  check_registry<ShearViscosities>(3);
+  check_registry<ShearViscosities>(4);
   check_registry<BulkViscosities>(1);
-  check_registry<Conductivities>(3);
+  check_registry<Conductivities>(4);
   check_registry<Dissipations>(1);
   check_registry<FrictionalPressures>(2);
   check_registry<FrictionalViscosities>(1);

@@ -98,6 +98,12 @@ TEST_CASE_TEMPLATE("out of domain: one-class radial distribution functions and t
                                [](const ValuesOf<T>& v) { return GidaspowRadialDistribution(v[1], v[2]); });
   check_radial_distribution<T>("MaAhmadi", {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}})}},
                                [](const ValuesOf<T>& v) { return MaAhmadi{parameter(v, 1)}; });
+  check_radial_distribution<T>("SongStrattMason",
+                               {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {0.75, "0.75"}})}},
+                               [](const ValuesOf<T>& v) { return SongStrattMason{parameter(v, 1)}; });
+  check_radial_distribution<T>("TobochnikChapin",
+                               {{"packing_margin", 0.01, and_non_finite({{0.0, "0"}, {-0.5, "-0.5"}, {0.75, "0.75"}})}},
+                               [](const ValuesOf<T>& v) { return TobochnikChapin{parameter(v, 1)}; });
   check_radial_distribution<T>("LathouwersBellan", packing, [](const ValuesOf<T>& v) {
     return LathouwersBellan{parameter(v, 1), parameter(v, 2)};
   });
@@ -119,6 +125,8 @@ TEST_CASE_TEMPLATE("out of domain: pressures, viscosities, conductivities and di
   check_closure<T>("HrenyaSinclairConductivity", length,
                    [](const ValuesOf<T>& v) { return HrenyaSinclairConductivity(v[6]); });
   check_closure<T>("LunDissipation", {}, [](const auto&) { return LunDissipation{}; });
+  check_closure<T>("EnskogViscosity", {}, [](const auto&) { return EnskogViscosity{}; });
+  check_closure<T>("EnskogConductivity", {}, [](const auto&) { return EnskogConductivity{}; });
 }
 
 TEST_CASE_TEMPLATE("out of domain: frictional pressures and viscosities", T, FLUIDBED_SCALAR_TYPES) {

@@ -18,3 +18,4 @@
 #include "kinetic_theory/registry.hpp"
 #include "kinetic_theory/solid_solid_drag.hpp"
 #include "kinetic_theory/viscosity.hpp"
+#include "kinetic_theory/walls.hpp"

@@ -94,18 +94,21 @@ program kinetic_theory_moments
     character(len=field), allocatable :: cells(:, :)
   end type
   ! The tables' names and the library's (tests/kinetic_theory_table_names.hpp).
-  character(len=*), parameter :: radial_tables(8) = [character(len=24) :: 'carnahan_starling', 'percus_yevick', &
-    'lun_savage', 'sinclair_jackson', 'ogawa', 'gidaspow', 'ma_ahmadi', 'lathouwers_bellan']
-  character(len=*), parameter :: radial_names(8) = [character(len=32) :: 'CarnahanStarling', 'PercusYevick', &
-    'LunSavage', 'SinclairJackson', 'Ogawa', 'GidaspowRadialDistribution', 'MaAhmadi', 'LathouwersBellan']
-  character(len=*), parameter :: law_tables(11) = [character(len=48) :: 'granular_pressure:lun', &
+  character(len=*), parameter :: radial_tables(10) = [character(len=24) :: 'carnahan_starling', 'percus_yevick', &
+    'lun_savage', 'sinclair_jackson', 'ogawa', 'gidaspow', 'ma_ahmadi', 'lathouwers_bellan', 'song_stratt_mason', &
+    'tobochnik_chapin']
+  character(len=*), parameter :: radial_names(10) = [character(len=32) :: 'CarnahanStarling', 'PercusYevick', &
+    'LunSavage', 'SinclairJackson', 'Ogawa', 'GidaspowRadialDistribution', 'MaAhmadi', 'LathouwersBellan', &
+    'SongStrattMason', 'TobochnikChapin']
+  character(len=*), parameter :: law_tables(13) = [character(len=48) :: 'granular_pressure:lun', &
     'granular_pressure:syamlal_rogers_obrien', 'granular_pressure:ma_ahmadi', 'shear_viscosity:gidaspow', &
     'shear_viscosity:syamlal', 'shear_viscosity:hrenya_sinclair', 'bulk_viscosity:lun', 'conductivity:gidaspow', &
-    'conductivity:syamlal', 'conductivity:hrenya_sinclair', 'dissipation:lun']
-  character(len=*), parameter :: law_names(11) = [character(len=32) :: 'LunPressure', &
+    'conductivity:syamlal', 'conductivity:hrenya_sinclair', 'dissipation:lun', 'shear_viscosity:enskog', &
+    'conductivity:enskog']
+  character(len=*), parameter :: law_names(13) = [character(len=32) :: 'LunPressure', &
     'SyamlalRogersOBrienPressure', 'AhmadiMaPressure', 'GidaspowViscosity', 'SyamlalViscosity', &
     'HrenyaSinclairViscosity', 'LunBulkViscosity', 'GidaspowConductivity', 'SyamlalConductivity', &
-    'HrenyaSinclairConductivity', 'LunDissipation']
+    'HrenyaSinclairConductivity', 'LunDissipation', 'EnskogViscosity', 'EnskogConductivity']
   character(len=*), parameter :: mixture_tables(3) = [character(len=24) :: 'lebowitz', 'mansoori', &
     'modified_mansoori']
   character(len=*), parameter :: mixture_names(3) = [character(len=24) :: 'Lebowitz', 'Mansoori', 'ModifiedMansoori']
@@ -153,7 +156,7 @@ program kinetic_theory_moments
   print '(a, 5(i0, a))', 'fortran: ', sphere_drag_rows, ' sphere drag rows, ', settling_rows, &
         ' settling closure rows, ', friction_rows, ' friction rows, ', elastic_rows, ' elastic state rows, ', &
         moment_rules, ' moment rules (case, node count)'
-  call check(radial_rows == 191 .and. law_rows == 1092 .and. mixture_rows == 130 .and. solid_drag_rows == 224 .and. &
+  call check(radial_rows == 214 .and. law_rows == 1260 .and. mixture_rows == 130 .and. solid_drag_rows == 224 .and. &
              exchange_rows == 72 .and. sphere_drag_rows == 30 .and. settling_rows == 96 .and. &
              friction_rows == 1253 .and. elastic_rows == 75 .and. moment_rules == 215, &
              'every row of the tables compared')

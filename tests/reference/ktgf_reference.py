@@ -135,6 +135,62 @@ def g0_py(p, pmax=None, plain=None):
     return (1 + p / 2) / (1 - p) ** 2
 
 
+# seed 002 eq. 77 with its Table III: y = sum_n c_n (4 phi)^(n+1) / (1 - (phi/phi_cp)^a)^b, the
+# excess compressibility of the hard-sphere fluid, and g0 = chi = y/(4 phi).  The parameters are
+# typed here from Table III as printed (CS, MA, SSM = Song, Stratt & Mason 1988, TC = Tobochnik &
+# Chapin 1988); the closed forms below are written separately and checked against them.
+TABLE_III = {  # name: (phi_cp, a, b, [c_0 .. c_8])
+    'CS': ('1', '1', '3', ['1', '-0.125']),
+    'MA': ('0.64356', '3', '0.67802', ['1', '0.625', '0.2869', '0.070554']),
+    'SSM': ('0.6435', '1', '0.76', ['1', '0.3298', '0.08867', '0.01472', '0.0005396', '-0.0003574', '-0.0005705',
+                                    '-0.0001212', '-0.0001151']),
+    'TC': ('0.6875', '1', '1', ['1', '0.2613', '0.05968', '0.005905', '-0.001191', '-0.0004455', '-0.0004818',
+                                '-0.00003636', '-0.00008182']),
+}
+
+
+def y_eq77(p, name):
+    """seed 002 eq. 77 literally, with Table III's parameters"""
+    pcp, a, b, cs = TABLE_III[name]
+    num = sum(M(c) * (4 * p) ** (n + 1) for n, c in enumerate(cs))
+    return num / (1 - (p / M(pcp)) ** M(a)) ** M(b)
+
+
+SSM_C = [M(c) for c in ('0.3298', '0.08867', '0.01472', '0.0005396', '-0.0003574', '-0.0005705', '-0.0001212',
+                        '-0.0001151')]
+SSM_PMAX, SSM_POW = M('0.6435'), M('0.76')
+TC_C = [M(c) for c in ('0.2613', '0.05968', '0.005905', '-0.001191', '-0.0004455', '-0.0004818', '-0.00003636',
+                       '-0.00008182')]
+TC_PMAX = M('0.6875')
+
+
+def ssm_poly(p):
+    """1 + sum_{n>=1} c_n (4 phi)^n, Song, Stratt & Mason's c_n (seed 002 Table III)"""
+    return 1 + sum(c * (4 * p) ** (n + 1) for n, c in enumerate(SSM_C))
+
+
+def tc_poly(p):
+    return 1 + sum(c * (4 * p) ** (n + 1) for n, c in enumerate(TC_C))
+
+
+def ssm_den(q, pmax=SSM_PMAX):
+    return (1 - q / pmax) ** (-SSM_POW)
+
+
+def tc_den(q, pmax=TC_PMAX):
+    return 1 / (1 - q / pmax)
+
+
+def g0_ssm(p, pmax=SSM_PMAX):
+    """Song, Stratt & Mason (1988) via seed 002 Table III: chi = poly(4 phi)/(1 - phi/0.6435)^0.76"""
+    return ssm_poly(p) * ssm_den(p, pmax)
+
+
+def g0_tc(p, pmax=TC_PMAX):
+    """Tobochnik & Chapin (1988) via seed 002 Table III: chi = poly(4 phi)/(1 - phi/0.6875)"""
+    return tc_poly(p) * tc_den(p, pmax)
+
+
 # ---------------------------------------------------------------------------
 # Rule R: a factor singular at phi_max is continued linearly above phi_c = phi_max - 0.01
 # ---------------------------------------------------------------------------
@@ -185,6 +241,16 @@ def g0c_ma_ahmadi(p, pmax=MA_PMAX, plain=None):
     return poly * rule_r(lambda q: ma_den(q, pmax), p, pmax - DELTA, False)
 
 
+def g0c_ssm(p, pmax=SSM_PMAX, plain=None):
+    """the whole g0 continued (its polynomial turns down beyond the pole: not only the factor)"""
+    return rule_r(lambda q: g0_ssm(q, pmax), p, pmax - DELTA, plain)
+
+
+def g0c_tc(p, pmax=TC_PMAX, plain=None):
+    """the whole g0 continued, as Song-Stratt-Mason"""
+    return rule_r(lambda q: g0_tc(q, pmax), p, pmax - DELTA, plain)
+
+
 def lb_factor(j, pmax):
     return lambda q: (1 - q / pmax) ** (-j)
 
@@ -210,11 +276,18 @@ RDF = {  # variant: (function(p, pmax, plain), max packings written; None = no p
     'gidaspow': (g0c_gidaspow, ['0.6', '0.63', '0.64']),
     'ma_ahmadi': (g0c_ma_ahmadi, ['0.64356']),
     'lathouwers_bellan': (g0c_lathouwers_bellan, ['0.6', '0.63', '0.64']),
+    'song_stratt_mason': (g0c_ssm, ['0.6435']),
+    'tobochnik_chapin': (g0c_tc, ['0.6875']),
 }
 RDF_PLAIN = {'lun_savage': g0_lun_savage, 'sinclair_jackson': g0_sinclair_jackson, 'ogawa': g0_ogawa,
-             'gidaspow': g0_gidaspow, 'ma_ahmadi': g0_ma_ahmadi, 'lathouwers_bellan': g0_lathouwers_bellan}
+             'gidaspow': g0_gidaspow, 'ma_ahmadi': g0_ma_ahmadi, 'lathouwers_bellan': g0_lathouwers_bellan,
+             'song_stratt_mason': g0_ssm, 'tobochnik_chapin': g0_tc}
 RDF_EXTRA_PHIS = ['0.625', '0.635', '0.65', '0.7']  # written for the continued RDFs, every phi_max
 MA_EXTRA_PHIS = ['0.63', '0.635', '0.64', '0.65', '0.7']
+# the forms whose packing limit is a constant of the fit: their own phis beyond 0.6 (phi_c = 0.63356,
+# 0.6335, 0.6775)
+FIT_EXTRA_PHIS = {'ma_ahmadi': MA_EXTRA_PHIS, 'song_stratt_mason': MA_EXTRA_PHIS,
+                  'tobochnik_chapin': ['0.63', '0.65', '0.68', '0.7']}
 
 # RDFs used inside the constitutive functions (variant suffix ':<rdf>'); ogawa is the
 # continued one with phi_max = 0.63 (every state written lies below phi_c = 0.62)
@@ -336,6 +409,38 @@ def k_hs(p, T, e, d, r, g, L, with_g0=True):
 def gam_lun(p, T, e, d, r, g):
     """Lun et al. (1984): 12 (1 - e^2) g0 phi^2 rho Theta^(3/2)/(d sqrt(pi)) (seed 001 eq 34 corrected)"""
     return 12 * (1 - e ** 2) * g * p ** 2 * r * T ** M('1.5') / (d * sqrt(pi))
+
+
+# Enskog theory of elastic hard spheres (seed 002 eqs 72-76), y = y^ES = 4 phi g0 (e not used)
+ES_MU_COEF, ES_K_COEF = M('0.7614'), M('0.7574')  # seed 002 eqs 75-76 as printed
+
+
+def k_dil(T, d, r):
+    """(75/384) pi rho d sqrt(Theta/pi) (seed 002 eq 72)"""
+    return M(75) / 384 * pi * r * d * sqrt(T / pi)
+
+
+def mu_dil_s002(T, d, r):
+    """(5/96) pi rho d sqrt(Theta/pi), seed 002 eq 72 as printed"""
+    return M(5) / 96 * pi * r * d * sqrt(T / pi)
+
+
+def mu_es(p, T, e, d, r, g, coef=ES_MU_COEF):
+    """seed 002 eq 75: 4 mu_id phi (1/y + 4/5 + 0.7614 y)"""
+    y = 4 * p * g
+    return 4 * mu_dil_s002(T, d, r) * p * (1 / y + M(4) / 5 + coef * y)
+
+
+def mu_es_eq73(p, T, e, d, r, g, coef=ES_MU_COEF):
+    """seed 002 eq 73 with b rho_s = 4 phi"""
+    brho = 4 * p
+    return mu_dil_s002(T, d, r) * (1 / (g * brho) + M(4) / 5 + coef * g * brho) * brho
+
+
+def k_es(p, T, e, d, r, g, coef=ES_K_COEF):
+    """seed 002 eq 76: 4 kappa_id phi (1/y + 6/5 + 0.7574 y)"""
+    y = 4 * p * g
+    return 4 * k_dil(T, d, r) * p * (1 / y + M(6) / 5 + coef * y)
 
 
 def theta_eq(mu_fun, p, e, d, r, g, gdot, K=0):
@@ -628,6 +733,94 @@ def check_notes():
             chk(mu_gid_kin_s001_printed(p, t, e, dd_, r2, g), '0.04218038671871525', what='12.4 eq27 lit')
             chk(mu_sya_kin(p, t, e, dd_, r2, g), '0.008085538046029513', what='12.4 sya x phi')
             chk(gam_s001_printed(p, t, e, dd_, r2, g), '44743.08084550771', what='12.4 gam lit')
+
+
+def check_enskog():
+    """seed 002 eq 77 / Table III (the worked y^ES and chi table, 8 significant digits, independent
+    double-precision evaluation) and the Enskog transport coefficients, eqs 72-76"""
+    ytab = {  # phi: y_CS, y_MA (Table III), y_SSM, y_TC, chi_CS, chi_MA (Table III)
+        '0.05': ('0.2274384', '0.22748042', '0.22748816', '0.22748267', '1.137192', '1.1374021'),
+        '0.1': ('0.521262', '0.52149514', '0.52166316', '0.52163853', '1.303155', '1.3037379'),
+        '0.2': ('1.40625', '1.4045136', '1.4097992', '1.4096665', '1.7578125', '1.755642'),
+        '0.3': ('2.9737609', '2.947995', '2.990319', '2.9895958', '2.4781341', '2.4566625'),
+        '0.4': ('5.9259259', '5.8274315', '6.0175958', '6.006947', '3.7037037', '3.6421447'),
+        '0.5': ('12', '12.170865', '12.811366', '12.604627', '6', '6.0854325'),
+        '0.55': ('17.503429', '19.286397', '20.467147', '19.438463', '7.9561043', '8.7665443'),
+        '0.6': ('26.25', '37.997256', '40.986892', '33.541314', '10.9375', '15.83219'),
+        '0.63': ('34.078929', '91.859721', '104.71102', '52.991715', '13.523385', '36.45227'),
+    }
+    for ps, (ycs, yma, yssm, ytc, ccs, cma) in ytab.items():
+        p = M(ps)
+        chk(y_eq77(p, 'CS'), ycs, what='y CS ' + ps)
+        chk(y_eq77(p, 'MA'), yma, what='y MA ' + ps)
+        chk(y_eq77(p, 'SSM'), yssm, what='y SSM ' + ps)
+        chk(y_eq77(p, 'TC'), ytc, what='y TC ' + ps)
+        chk(y_eq77(p, 'CS') / (4 * p), ccs, what='chi CS ' + ps)
+        chk(y_eq77(p, 'MA') / (4 * p), cma, what='chi MA ' + ps)
+        # the closed forms written for the library's g0 are eq 77 / (4 phi) exactly
+        for name, gf in (('CS', g0_cs), ('SSM', g0_ssm), ('TC', g0_tc)):
+            assert abs(gf(p) - y_eq77(p, name) / (4 * p)) < M('1e-35') * gf(p), name
+            NCHK[0] += 1
+        chk(4 * p * g0_ssm(p), yssm, what='4 phi g0 SSM ' + ps)
+        chk(4 * p * g0_tc(p), ytc, what='4 phi g0 TC ' + ps)
+        # Table III's MA (c_3 = 0.070554, 64 c_3 = 4.515456) against the published 4.515439: ~1e-6
+        assert abs(y_eq77(p, 'MA') / (4 * p) / g0_ma_ahmadi(p) - 1) < M('2e-6')
+        NCHK[0] += 1
+    # the chi coefficients written out (c_n 4^n) as the independent evaluation printed them
+    for cs, written in ((SSM_C, ('1.3192', '1.41872', '0.94208', '0.1381376', '-0.3659776', '-2.336768', '-1.9857408',
+                                 '-7.5431936')),
+                        (TC_C, ('1.0452', '0.95488', '0.37792', '-0.304896', '-0.456192', '-1.9734528', '-0.59572224',
+                                '-5.36215552'))):
+        for n, (c, w) in enumerate(zip(cs, written)):
+            assert c * 4 ** (n + 1) == M(w), w
+            NCHK[0] += 1
+    # beyond the pole: continuing only the singular factor (as for Ma-Ahmadi) would make g0 negative
+    # by phi = 0.9 (negative c_4..c_8); the whole continued g0 is positive and increasing to phi -> 1
+    for gc, poly, den, pmx in ((g0c_ssm, ssm_poly, ssm_den, SSM_PMAX), (g0c_tc, tc_poly, tc_den, TC_PMAX)):
+        assert poly(M('0.9')) * rule_r(den, M('0.9'), pmx - DELTA, False) < 0
+        prev = mpf(0)
+        for i in range(1, 100):
+            v = gc(M(i) / 100)
+            assert v > prev
+            prev = v
+        NCHK[0] += 2
+    # dilute values (rho 2500, d 500 um, Theta 0.01) and the two writings of eq 72
+    T, d, r = M('0.01'), M('500e-6'), M('2500')
+    chk(mu_dil_s002(T, d, r), '0.0115394131', what='mu_id')
+    chk(k_dil(T, d, r), '0.0432727991', what='kappa_id')
+    assert abs(mu_dil_s002(T, d, r) - mu_dil(T, d, r)) < M('1e-35') * mu_dil(T, d, r)
+    # the constants: footnote 3's c_2 = 1.016 gives 0.76153 (printed 0.7614), the factor 1.025 gives
+    # 0.757499 (printed 0.7574); c = 1 gives Gidaspow's 0.7712 and 0.7674
+    exact_mu = M(4) / 25 * (1 + 12 / (pi * M('1.016')))
+    exact_k = M(9) / 25 * (1 + 32 / (9 * pi * M('1.025')))
+    chk(exact_mu, '0.761530', what='0.7614 derived')
+    chk(exact_k, '0.757499', what='0.7574 derived')
+    differs(ES_MU_COEF, exact_mu, 'printed 0.7614 vs derived')
+    assert abs(ES_MU_COEF / exact_mu - 1) < M('2e-4') and abs(ES_K_COEF / exact_k - 1) < M('1.4e-4')
+    NCHK[0] += 1
+    gid_mu, gid_k = M(4) / 25 + M(48) / (25 * pi), M(9) / 25 + M(32) / (25 * pi)
+    for ps in ('1e-4', '0.05', '0.3', '0.5', '0.6'):
+        p = M(ps)
+        for gf in (g0_cs, g0_ssm, g0_tc, g0_ma_ahmadi):
+            g = gf(p)
+            # eq 73 with b rho = 4 phi is eq 75
+            assert abs(mu_es_eq73(p, T, 1, d, r, g) - mu_es(p, T, 1, d, r, g)) < M('1e-35') * mu_es(p, T, 1, d, r, g)
+            # with c_2 = c_1 = 1 the Enskog forms are Gidaspow's at e = 1 (seed 002 eqs 82-83)
+            for a, b in ((mu_es(p, T, 1, d, r, g, gid_mu), mu_gid(p, T, 1, d, r, g)),
+                         (k_es(p, T, 1, d, r, g, gid_k), k_gid(p, T, 1, d, r, g))):
+                assert abs(a - b) < M('1e-30') * b
+            # the printed constant moves mu by less than it differs itself (1.7e-4 relative)
+            assert abs(mu_es(p, T, 1, d, r, g) / mu_es(p, T, 1, d, r, g, exact_mu) - 1) < abs(ES_MU_COEF / exact_mu - 1)
+            # dense >= dilute, the restitution is not used
+            assert mu_es(p, T, M('0.9'), d, r, g) > mu_dil(T, d, r) and k_es(p, T, M('0.9'), d, r, g) > k_dil(T, d, r)
+            assert mu_es(p, T, M('0.9'), d, r, g) == mu_es(p, T, 1, d, r, g)
+            NCHK[0] += 5
+    # dilute limit: mu_es -> mu_id, kappa_es -> kappa_id (g0 -> 1)
+    tiny = M('1e-30')
+    for gf in (g0_cs, g0_ssm, g0_tc):
+        assert abs(mu_es(tiny, T, 1, d, r, gf(tiny)) / mu_dil(T, d, r) - 1) < M('1e-28')
+        assert abs(k_es(tiny, T, 1, d, r, gf(tiny)) / k_dil(T, d, r) - 1) < M('1e-28')
+        NCHK[0] += 2
 
 
 # ---------------------------------------------------------------------------
@@ -1449,6 +1642,8 @@ KTGF_FUNCS = [  # function, variant, value(p, T, e, d, r, g[, extra]), extras
     ('conductivity', 'syamlal', k_sya, [None]),
     ('conductivity', 'hrenya_sinclair', k_hs, ['1e-3', '0.1']),
     ('dissipation', 'lun', gam_lun, [None]),
+    ('shear_viscosity', 'enskog', mu_es, [None]),
+    ('conductivity', 'enskog', k_es, [None]),
 ]
 
 
@@ -1458,6 +1653,7 @@ def row(fn, var, p, T, e, d, r, extra, v, dp, dT):
 
 def main():
     check_notes()
+    check_enskog()
     check_misprints_and_limits()
     check_continuation()
     check_mixture()
@@ -1470,7 +1666,7 @@ def main():
     # --- radial distribution functions (depend on phi only; other state columns written as 0)
     for name, (f, pmaxs) in RDF.items():
         for pm in pmaxs:
-            extra = [] if pm is None else (MA_EXTRA_PHIS if name == 'ma_ahmadi' else RDF_EXTRA_PHIS)
+            extra = [] if pm is None else FIT_EXTRA_PHIS.get(name, RDF_EXTRA_PHIS)
             for ps in PHIS + extra:
                 p = M(ps)
                 pmx = None if pm is None else M(pm)

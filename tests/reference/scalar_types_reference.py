@@ -417,7 +417,10 @@ KT_PHIS = ['0.0078125', '0.125', '0.375', '0.5', '0.59375', '0.6328125']
 KT_THETAS = ['0', '0.0009765625', '0.0625', '1']
 KT_MATERIALS = [('0.75', '0.00048828125', '2500'), ('0.875', '0.001953125', '1250')]  # e, d, rho_s
 KT_RDF_PACKINGS = {'lun_savage': 0.63, 'sinclair_jackson': 0.64, 'ogawa': 0.63, 'gidaspow': 0.64,
-                   'ma_ahmadi': None, 'lathouwers_bellan': 0.64, 'carnahan_starling': None, 'percus_yevick': None}
+                   'ma_ahmadi': None, 'lathouwers_bellan': 0.64, 'carnahan_starling': None, 'percus_yevick': None,
+                   'song_stratt_mason': None, 'tobochnik_chapin': None}
+# the forms whose packing limit is a constant of the fit (a decimal, not a double parameter)
+KT_RDF_FIT_PACKINGS = {'ma_ahmadi': kt.MA_PMAX, 'song_stratt_mason': kt.SSM_PMAX, 'tobochnik_chapin': kt.TC_PMAX}
 
 
 def with_margin(f):
@@ -439,6 +442,7 @@ KT_CONSTITUTIVE = [  # (function, author, value(p, T, e, d, r, g [, L]), takes L
     ('shear_viscosity', 'hrenya_sinclair', kt.mu_hs, True), ('bulk_viscosity', 'lun', kt.lam_lun, False),
     ('conductivity', 'gidaspow', kt.k_gid, False), ('conductivity', 'syamlal', kt.k_sya, False),
     ('conductivity', 'hrenya_sinclair', kt.k_hs, True), ('dissipation', 'lun', kt.gam_lun, False),
+    ('shear_viscosity', 'enskog', kt.mu_es, False), ('conductivity', 'enskog', kt.k_es, False),
 ]
 
 
@@ -447,10 +451,10 @@ def kinetic_theory_rows():
     for variant, pmax_double in KT_RDF_PACKINGS.items():
         f, _ = kt.RDF[variant]
         f = with_margin(f)
-        pmax = kt.MA_PMAX if variant == 'ma_ahmadi' else (None if pmax_double is None else of_double(pmax_double))
+        pmax = KT_RDF_FIT_PACKINGS.get(variant, None if pmax_double is None else of_double(pmax_double))
         for ps in KT_PHIS + ['0.640625']:
             p = exact(ps)
-            if pmax is None and variant != 'ma_ahmadi' and p > exact('0.625'):
+            if pmax is None and p > exact('0.625'):
                 continue
             plain = None if pmax is None else p <= pmax - of_double(0.01)
             v = f(p, pmax, plain)

@@ -83,14 +83,16 @@ def test_drag_reference_rows_bit_for_bit_with_the_c_interface(law_name, cells):
 
 RADIAL_NAMES = {"carnahan_starling": "CarnahanStarling", "percus_yevick": "PercusYevick", "lun_savage": "LunSavage",
                 "sinclair_jackson": "SinclairJackson", "ogawa": "Ogawa", "gidaspow": "GidaspowRadialDistribution",
-                "ma_ahmadi": "MaAhmadi", "lathouwers_bellan": "LathouwersBellan"}
+                "ma_ahmadi": "MaAhmadi", "lathouwers_bellan": "LathouwersBellan",
+                "song_stratt_mason": "SongStrattMason", "tobochnik_chapin": "TobochnikChapin"}
 CONSTITUTIVE_NAMES = {"granular_pressure:lun": "LunPressure",
                       "granular_pressure:syamlal_rogers_obrien": "SyamlalRogersOBrienPressure",
                       "granular_pressure:ma_ahmadi": "AhmadiMaPressure", "shear_viscosity:gidaspow": "GidaspowViscosity",
                       "shear_viscosity:syamlal": "SyamlalViscosity",
                       "shear_viscosity:hrenya_sinclair": "HrenyaSinclairViscosity", "bulk_viscosity:lun": "LunBulkViscosity",
                       "conductivity:gidaspow": "GidaspowConductivity", "conductivity:syamlal": "SyamlalConductivity",
-                      "conductivity:hrenya_sinclair": "HrenyaSinclairConductivity", "dissipation:lun": "LunDissipation"}
+                      "conductivity:hrenya_sinclair": "HrenyaSinclairConductivity", "dissipation:lun": "LunDissipation",
+                      "shear_viscosity:enskog": "EnskogViscosity", "conductivity:enskog": "EnskogConductivity"}
 
 
 def test_kinetic_theory_reference_rows_bit_for_bit_with_the_c_interface():
@@ -122,7 +124,7 @@ def test_kinetic_theory_reference_rows_bit_for_bit_with_the_c_interface():
         for p, q in zip(python, out):
             assert same_bits(p, q)
         compared += 1
-    assert compared == 191 + 1092
+    assert compared == 214 + 1260
 
 
 def test_shapes_broadcasting_and_float32():

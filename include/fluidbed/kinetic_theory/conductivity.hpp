@@ -97,4 +97,26 @@ struct HrenyaSinclairConductivity : WithGidaspowCollisionalConductivity<HrenyaSi
   }
 };
 
+// Enskog's conductivity of elastic hard spheres (standard Enskog theory, Chapman & Cowling 1970,
+// ch. 16), seed 002 eq. 76 (= eq. 74 with bρ_s = 4φ):
+//   κ = 4 κ_dil φ (1/y + 6/5 + 0.7574 y),   y = 4 φ g0,   κ_dil = (75/384) ρ_s d √(πΘ) (eq. 72),
+// evaluated as κ_dil (1/g0 + (24/5) φ + 16 · 0.7574 g0 φ²), finite at φ = 0 (→ κ_dil). The
+// constant is the seed's printed 0.7574, kept as the seed's model: (9/25)(1 + 32/(9π c)) with the
+// factor c = 1.025 is 0.757499, of which 0.7574 is the truncation (1.3e-4 relative); c = 1 gives
+// Gidaspow's 0.7674 (GidaspowConductivity at e = 1). The restitution is not
+// used (elastic spheres). No kinetic/collisional split. Validity: seed 002 states the molecular
+// dynamics comparison (Alder, Gass & Wainwright 1970) for the viscosity only; declared as the
+// dense-gas laws' range.
+struct EnskogConductivity : ConstitutiveLaw<EnskogConductivity> {
+  constexpr std::string_view name() const { return "EnskogConductivity"; }
+  constexpr std::string_view reference() const { return detail::enskog_reference; }
+  constexpr Validity<1> validity() const { return detail::dense_gas_validity; }
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi, const S& theta, const S& g0, const GranularMaterial<T>& m) const {
+    using std::sqrt;
+    const S dilute = (T(75) / 384 * numbers::sqrt_pi<T>() * m.density * m.diameter) * sqrt(theta);
+    return dilute * (1 / g0 + FLUIDBED_DECIMAL(T, 4.8) * phi + (16 * FLUIDBED_DECIMAL(T, 0.7574)) * g0 * phi * phi);
+  }
+};
+
 }  // namespace fluidbed::kinetic_theory

@@ -211,6 +211,118 @@ struct MaAhmadi : SolidFractionLaw<MaAhmadi> {
   }
 };
 
+// The two further fits of seed 002 eq. 77 with its Table III, in the form
+//   g0 = y/(4φ) = Σ_n c_n (4φ)^n / (1 − φ/φ_cp)^b
+// (y = 4φ g0 the excess compressibility, seed 002 eq. 77 with a = 1). The polynomial is
+// evaluated in x = 4φ with Table III's c_n as printed. Unlike Ma–Ahmadi's, these polynomials
+// have negative high-order coefficients: continued beyond the pole they would turn down near
+// φ ≈ 0.77 and below zero near 0.86. So the whole g0 (not only its singular factor) is
+// continued linearly above φ_cp − packing_margin: finite, increasing and positive for φ < 1.
+// Both → 1 as φ → 0, with the slope 4 c_1 + b/φ_cp (2.50024 and 2.49975; the second virial
+// coefficient gives 5/2).
+
+// Song, Stratt & Mason (1988), J. Chem. Phys. 88, 1126 (seed 002 Table III prints "Strat"),
+// φ_cp = 0.6435, b = 0.76:
+//   c_n = 1, 0.3298, 0.08867, 0.01472, 0.0005396, −0.0003574, −0.0005705, −0.0001212, −0.0001151.
+// Validity: declared up to the fit's pole φ_cp = 0.6435 (random close packing), as for Ma–Ahmadi;
+// seed 002 Fig. 23 compares it with hard-sphere molecular dynamics.
+struct SongStrattMason : SolidFractionLaw<SongStrattMason> {
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T max_packing() {
+    return FLUIDBED_DECIMAL(T, 0.6435);
+  }
+  double packing_margin = default_packing_margin;
+
+  constexpr explicit SongStrattMason(double packing_margin_ = default_packing_margin)
+      : packing_margin(packing_margin_) {}
+  constexpr std::string_view name() const { return "SongStrattMason"; }
+  constexpr std::string_view reference() const {
+    return "Song, Y., Stratt, R.M. & Mason, E.A. (1988) J. Chem. Phys. 88, 1126-1133; seed 002 eq. 77, Table III";
+  }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing<double>()}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::packing_domain(max_packing<double>(), packing_margin);
+  }
+  // The pole is a constant of the fit, not a parameter.
+  static constexpr auto parameters() {
+    return std::array{parameter<&SongStrattMason::packing_margin>("packing_margin")};
+  }
+  // The published formula, for any scalar (continued above φ_cp − packing_margin by kernel).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S formula(const S& phi) {
+    using std::pow;
+    using T = value_type_of<S>;
+    const S x = 4 * phi;
+    const S polynomial =
+        1 + x * (FLUIDBED_DECIMAL(T, 0.3298) +
+                 x * (FLUIDBED_DECIMAL(T, 0.08867) +
+                      x * (FLUIDBED_DECIMAL(T, 0.01472) +
+                           x * (FLUIDBED_DECIMAL(T, 0.0005396) +
+                                x * (FLUIDBED_DECIMAL(T, -0.0003574) +
+                                     x * (FLUIDBED_DECIMAL(T, -0.0005705) +
+                                          x * (FLUIDBED_DECIMAL(T, -0.0001212) +
+                                               x * FLUIDBED_DECIMAL(T, -0.0001151))))))));
+    return polynomial * pow(1 - phi / max_packing<T>(), FLUIDBED_DECIMAL(T, -0.76));
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
+    using T = value_type_of<S>;
+    return detail::continued_linearly_above(phi, max_packing<T>() - T(packing_margin),
+                                            [](const auto& q) { return formula(q); });
+  }
+};
+
+// Tobochnik & Chapin (1988), J. Chem. Phys. 88, 5824 (as credited by seed 002 Table III),
+// φ_cp = 0.6875, b = 1:
+//   c_n = 1, 0.2613, 0.05968, 0.005905, −0.001191, −0.0004455, −0.0004818, −0.00003636,
+//         −0.00008182.
+// Validity: declared up to the fit's pole φ_cp = 0.6875, as Table III gives it; above random
+// close packing (≈ 0.64) there is no disordered hard-sphere state to compare it with.
+struct TobochnikChapin : SolidFractionLaw<TobochnikChapin> {
+  template <class T>
+  FLUIDBED_HOST_DEVICE static constexpr T max_packing() {
+    return FLUIDBED_DECIMAL(T, 0.6875);
+  }
+  double packing_margin = default_packing_margin;
+
+  constexpr explicit TobochnikChapin(double packing_margin_ = default_packing_margin)
+      : packing_margin(packing_margin_) {}
+  constexpr std::string_view name() const { return "TobochnikChapin"; }
+  constexpr std::string_view reference() const {
+    return "Tobochnik, J. & Chapin, P.M. (1988) J. Chem. Phys. 88, 5824; seed 002 eq. 77, Table III";
+  }
+  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing<double>()}}}; }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return detail::packing_domain(max_packing<double>(), packing_margin);
+  }
+  // The pole is a constant of the fit, not a parameter.
+  static constexpr auto parameters() {
+    return std::array{parameter<&TobochnikChapin::packing_margin>("packing_margin")};
+  }
+  // The published formula, for any scalar (continued above φ_cp − packing_margin by kernel).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S formula(const S& phi) {
+    using T = value_type_of<S>;
+    const S x = 4 * phi;
+    const S polynomial =
+        1 + x * (FLUIDBED_DECIMAL(T, 0.2613) +
+                 x * (FLUIDBED_DECIMAL(T, 0.05968) +
+                      x * (FLUIDBED_DECIMAL(T, 0.005905) +
+                           x * (FLUIDBED_DECIMAL(T, -0.001191) +
+                                x * (FLUIDBED_DECIMAL(T, -0.0004455) +
+                                     x * (FLUIDBED_DECIMAL(T, -0.0004818) +
+                                          x * (FLUIDBED_DECIMAL(T, -0.00003636) +
+                                               x * FLUIDBED_DECIMAL(T, -0.00008182))))))));
+    return polynomial / (1 - phi / max_packing<T>());
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
+    using T = value_type_of<S>;
+    return detail::continued_linearly_above(phi, max_packing<T>() - T(packing_margin),
+                                            [](const auto& q) { return formula(q); });
+  }
+};
+
 namespace detail {
 
 // (1 − x/x_max)^(−power), continued linearly above x_max − margin: the factors of the

@@ -109,7 +109,7 @@ struct SolidSolidDragFamily {
 // g0(φ), one class.
 using RadialDistributions =
     Registry<detail::RadialDistributionFamily, CarnahanStarling, PercusYevick, LunSavage, Ogawa, SinclairJackson,
-             GidaspowRadialDistribution, MaAhmadi, LathouwersBellan>;
+             GidaspowRadialDistribution, MaAhmadi, LathouwersBellan, SongStrattMason, TobochnikChapin>;
 // g_ik(fractions, diameters, i, k), several classes.
 using MixtureRadialDistributions =
     Registry<detail::MixtureRadialDistributionFamily, Lebowitz, Mansoori, ModifiedMansoori>;
@@ -117,10 +117,11 @@ using MixtureRadialDistributions =
 using GranularPressures =
     Registry<detail::GranularPressureFamily, LunPressure, SyamlalRogersOBrienPressure, AhmadiMaPressure>;
 using ShearViscosities =
-    Registry<detail::ShearViscosityFamily, GidaspowViscosity, SyamlalViscosity, HrenyaSinclairViscosity>;
+    Registry<detail::ShearViscosityFamily, GidaspowViscosity, SyamlalViscosity, HrenyaSinclairViscosity,
+             EnskogViscosity>;
 using BulkViscosities = Registry<detail::BulkViscosityFamily, LunBulkViscosity>;
 using Conductivities = Registry<detail::ConductivityFamily, GidaspowConductivity, SyamlalConductivity,
-                                HrenyaSinclairConductivity>;
+                                HrenyaSinclairConductivity, EnskogConductivity>;
 using Dissipations = Registry<detail::DissipationFamily, LunDissipation>;
 // Friction: p_f(φ); μ_f(p_f, strain rate); {p_f, μ_f}(φ, Θ, d, strain rate).
 using FrictionalPressures = Registry<detail::FrictionalPressureFamily, JohnsonJacksonPressure, SchaefferPressure>;
