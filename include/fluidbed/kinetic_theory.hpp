@@ -17,5 +17,6 @@
 #include "kinetic_theory/radial_distribution.hpp"
 #include "kinetic_theory/registry.hpp"
 #include "kinetic_theory/solid_solid_drag.hpp"
+#include "kinetic_theory/unequal_temperature_mixture.hpp"
 #include "kinetic_theory/viscosity.hpp"
 #include "kinetic_theory/walls.hpp"
