@@ -10,13 +10,23 @@
 //   drag/WenYu1966     the baseline
 //   g0/<name>          every radial distribution of the registry RadialDistributions, with
 //                      dg0/dφ (g0.with_derivatives)
+//   mixture-values/<N> UnequalTemperatureMixture (seed 004's h_ik, ModifiedMansoori 0.64) for N
+//                      = 1…4 classes per cell: p_i, μ_ij, λ_ij, κ_ij, γ_i, β_ik, s_ik
+//   mixture-derivatives/<N>  the same with ∂/∂α_m and ∂/∂Θ_m of each (one Dual<2N> pass)
+// The mixture rows are compared with the one-class set of the same theory, LathouwersBellan
+// (its g0 at φ_max 0.64, Lun pressure, Gidaspow μ and κ: what one class of the mixture reduces
+// to), values with values and derivatives with derivatives.
 //
 // Sets: Gidaspow (Ogawa g0, φ_max 0.63, Lun pressure, Gidaspow μ and κ), Fluent (seed 001's
 // choice: Ogawa g0, Syamlal μ and κ), HrenyaSinclair (Carnahan–Starling g0).
-// 4096 cells with φ from 10⁻⁴ to 0.62 and Θ from 10⁻⁶ to 0.1 m² s⁻².
+// 4096 cells with φ from 10⁻⁴ to 0.62 and Θ from 10⁻⁶ to 0.1 m² s⁻²; a mixture cell splits the
+// cell's φ (up to 0.6) among its classes in unequal shares, with Θ_i spread over two decades
+// around the cell's Θ, d_i from 100 to 800 µm and ρ_i from 900 to 7800 kg m⁻³.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <tuple>
@@ -104,6 +114,57 @@ void full(benchmark::State& run, const Set& set) {
   });
 }
 
+template <std::size_t N>
+std::vector<GranularClassesState<double, N>> make_mixture_cells() {
+  std::vector<GranularClassesState<double, N>> out(cells);
+  for (int c = 0; c < cells; ++c) {
+    const Cell& cell = field[c];
+    auto& s = out[c];
+    double weights = 0;
+    for (std::size_t i = 0; i < N; ++i) weights += 1.0 + double((c * 13 + 7 * int(i)) % 5);
+    for (std::size_t i = 0; i < N; ++i) {
+      const double u = double((c * 29 + 11 * int(i)) % 97) / 96;
+      s.fractions[i] = std::min(cell.solid_fraction, 0.6) * (1.0 + double((c * 13 + 7 * int(i)) % 5)) / weights;
+      s.temperatures[i] = cell.granular_temperature * std::pow(10.0, 2 * u - 1);
+      s.diameters[i] = 100e-6 + 700e-6 * double(i + 1) / double(N + 1);
+      s.densities[i] = 900.0 + 6900.0 * u;
+    }
+    s.restitution = 0.9;
+  }
+  return out;
+}
+
+template <std::size_t N>
+void register_mixture() {
+  const UnequalTemperatureMixture mixture;
+  const auto states = std::make_shared<const std::vector<GranularClassesState<double, N>>>(make_mixture_cells<N>());
+  const std::string classes = std::to_string(N);
+  benchmark::RegisterBenchmark(("mixture-values/" + classes).c_str(), [=](benchmark::State& run) {
+    for (auto _ : run) {
+      double sum = 0;
+      for (const auto& s : *states) {
+        const auto r = mixture(s);
+        sum += r.pressure[N - 1] + r.shear_viscosity[0][N - 1] + r.conductivity[N - 1][0] + r.dissipation[0] +
+               r.drag[0][N - 1];
+      }
+      benchmark::DoNotOptimize(sum);
+    }
+    run.SetItemsProcessed(run.iterations() * cells);
+  });
+  benchmark::RegisterBenchmark(("mixture-derivatives/" + classes).c_str(), [=](benchmark::State& run) {
+    for (auto _ : run) {
+      double sum = 0;
+      for (const auto& s : *states) {
+        const auto r = mixture.with_derivatives(s);
+        sum += r.pressure[N - 1].d_fractions[0] + r.shear_viscosity[0][N - 1].d_temperatures[N - 1] +
+               r.conductivity[N - 1][0].value + r.dissipation[0].d_temperatures[0] + r.drag[0][N - 1].d_fractions[0];
+      }
+      benchmark::DoNotOptimize(sum);
+    }
+    run.SetItemsProcessed(run.iterations() * cells);
+  });
+}
+
 template <class Set>
 void register_set(const std::string& name, Set set) {
   benchmark::RegisterBenchmark(("values/" + name).c_str(), [set](benchmark::State& s) { values(s, set); });
@@ -135,6 +196,12 @@ int main(int argc, char** argv) {
   register_set("Fluent", ConstitutiveSet{Ogawa{0.63}, LunPressure{}, SyamlalViscosity{}, SyamlalConductivity{}});
   register_set("HrenyaSinclair", ConstitutiveSet{CarnahanStarling{}, LunPressure{}, HrenyaSinclairViscosity(0.1),
                                                  HrenyaSinclairConductivity(0.1)});
+  register_set("LathouwersBellan",
+               ConstitutiveSet{LathouwersBellan{0.64}, LunPressure{}, GidaspowViscosity{}, GidaspowConductivity{}});
+  register_mixture<1>();
+  register_mixture<2>();
+  register_mixture<3>();
+  register_mixture<4>();
   register_radial_distributions();
   benchmark::Initialize(&argc, argv);
   fluidbed::bench::RatioReporter reporter(cells);
@@ -142,5 +209,13 @@ int main(int argc, char** argv) {
   reporter.print_table(
       "KTGF set", {"Gidaspow", "Fluent", "HrenyaSinclair"}, {"values", "derivatives", "full"},
       [](const std::string&) { return std::string("drag/WenYu1966"); }, "the Wen-Yu drag (drag/WenYu1966)");
+  const std::vector<std::string> class_counts{"1", "2", "3", "4"};
+  reporter.print_table(
+      "classes", class_counts, {"mixture-values"}, [](const std::string&) { return std::string("values/LathouwersBellan"); },
+      "the one-class set values/LathouwersBellan");
+  reporter.print_table(
+      "classes", class_counts, {"mixture-derivatives"},
+      [](const std::string&) { return std::string("derivatives/LathouwersBellan"); },
+      "the one-class set derivatives/LathouwersBellan");
   benchmark::Shutdown();
 }
