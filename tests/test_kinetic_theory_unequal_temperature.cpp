@@ -11,7 +11,9 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <variant>
 
 #include "fluidbed/kinetic_theory.hpp"
 #include "kinetic_theory_table_names.hpp"
@@ -324,4 +326,48 @@ TEST_CASE("unequal-temperature mixture derivatives, float and long double, and t
   CHECK(va.shear_viscosity[0][1] == 0);
   CHECK(mixture.name() == "UnequalTemperatureMixture");
   CHECK(mixture.reference().find("Lathouwers") != std::string_view::npos);
+}
+
+TEST_CASE("the mixture's radial distribution is chosen at run time from the registry") {
+  const auto s = sand_and_biomass(900e-6);
+  for (const auto& law : MixtureRadialDistributions::all())
+    std::visit(
+        [&](const auto& rdf) {
+          CAPTURE(rdf.name());
+          const UnequalTemperatureMixture mixture{rdf};
+          const auto v = mixture(s);
+          for (std::size_t i = 0; i < 2; ++i)
+            for (std::size_t k = 0; k < 2; ++k)
+              CHECK(v.radial_distribution[i][k] ==
+                    rdf(std::span<const double>(s.fractions), std::span<const double>(s.diameters), i, k));
+        },
+        law);
+  const auto chosen = MixtureRadialDistributions::make("Mansoori");
+  const double h = std::visit([&](const auto& rdf) { return UnequalTemperatureMixture{rdf}(s).radial_distribution[0][1]; },
+                              chosen);
+  CHECK(h == Mansoori{}(std::span<const double>(s.fractions), std::span<const double>(s.diameters), 0, 1));
+}
+
+TEST_CASE("the stress power of a class in simple shear and in compression") {
+  const UnequalTemperatureMixture mixture;
+  const auto s = sand_and_biomass(700e-6);
+  const auto v = mixture(s);
+  // Simple shear u_x = γ̇ y of both classes: (−p I + τ_i):∇u_i = (μ_i0 + μ_i1) γ̇², class i's
+  // stress responding to both classes' shear.
+  const double rate = 3.0;
+  std::array<std::array<Vector3<double>, 3>, 2> shear{};
+  for (auto& g : shear) g[1][0] = rate;  // ∂u_x/∂y
+  for (std::size_t i = 0; i < 2; ++i)
+    CHECK(relative_difference(stress_power(v, i, shear),
+                              (v.shear_viscosity[i][0] + v.shear_viscosity[i][1]) * rate * rate) < 4 * eps);
+  // Only class 1 shears: class 0 is stressed (2 μ_01 D_1) but does not deform, so gains nothing.
+  std::array<std::array<Vector3<double>, 3>, 2> other{};
+  other[1][1][0] = rate;
+  CHECK(stress_power(v, 0, other) == 0);
+  // Isotropic compression ∇·u_i = −c of class 0 alone: −p_0 ∇·u_0 + λ_00 (∇·u_0)².
+  std::array<std::array<Vector3<double>, 3>, 2> compression{};
+  const double c = 0.6;
+  for (int a = 0; a < 3; ++a) compression[0][a][a] = -c / 3;
+  CHECK(relative_difference(stress_power(v, 0, compression), v.pressure[0] * c + v.bulk_viscosity[0][0] * c * c) <
+        8 * eps);
 }

@@ -57,7 +57,8 @@
 // Entry points of UnequalTemperatureMixture: mixture(state) → ClassKineticValues<T, N>,
 // mixture.with_derivatives(state) → the same with ∂/∂α_m and ∂/∂Θ_m of every entry,
 // mixture.checked / checked_with_derivatives (std::domain_error naming the argument and its
-// value), mixture.pair_terms(state, i, k) for the terms of one pair, and collisional_force.
+// value), mixture.pair_terms(state, i, k) for the terms of one pair, collisional_force and
+// stress_power (the production term of each class's granular energy balance).
 // No allocation, O(N²) square roots per cell (the pairs are symmetric), thread-safe.
 #pragma once
 
@@ -380,6 +381,28 @@ FLUIDBED_HOST_DEVICE Vector3<T> collisional_force(const ClassKineticValues<T, N>
       force[c] += values.drag[i][k] * (velocities[k][c] - velocities[i][c]) +
                   values.segregation[i][k] * (log_number_gradients[i][c] - log_number_gradients[k][c]);
   return force;
+}
+
+// The production of class i's granular energy by its stress [W m⁻³], (−p_i I + τ_i):∇u_i with
+// τ_i = Σ_j [2 μ_ij D_j + (λ_ij − ⅔ μ_ij)(∇·u_j) I], from the class velocity gradients
+// gradients[j][a][b] = ∂u_j,b/∂x_a. The cross terms j ≠ i couple class i's energy to the other
+// classes' deformation.
+template <class T, std::size_t N>
+FLUIDBED_HOST_DEVICE T stress_power(const ClassKineticValues<T, N>& values, std::size_t i,
+                                    const std::array<std::array<Vector3<T>, 3>, N>& gradients) {
+  FLUIDBED_EXPECTS(i < N);
+  const auto strain = [](const std::array<Vector3<T>, 3>& g, int a, int b) { return (g[a][b] + g[b][a]) / 2; };
+  const auto divergence = [](const std::array<Vector3<T>, 3>& g) { return g[0][0] + g[1][1] + g[2][2]; };
+  T power = -values.pressure[i] * divergence(gradients[i]);
+  for (std::size_t j = 0; j < N; ++j) {
+    T contraction(0);  // D_j : D_i
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) contraction += strain(gradients[j], a, b) * strain(gradients[i], a, b);
+    power += 2 * values.shear_viscosity[i][j] * contraction +
+             (values.bulk_viscosity[i][j] - T(2) / 3 * values.shear_viscosity[i][j]) * divergence(gradients[j]) *
+                 divergence(gradients[i]);
+  }
+  return power;
 }
 
 }  // namespace fluidbed::kinetic_theory
