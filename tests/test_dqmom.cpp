@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "fluidbed/core/vector3.hpp"
+#include "fluidbed/kinetic_theory/class_transport.hpp"
 #include "fluidbed/moments/dqmom.hpp"
 #include "fluidbed/moments/dqmom_batched.hpp"
 
@@ -289,8 +290,10 @@ TEST_CASE("DQMOM in float and long double: the growth identity and the two-node 
 }
 
 TEST_CASE("DQMOM diffusivities: the thesis's eq. 6.24 and 6.25 examples") {
-  CHECK(dqmom::self_diffusivity(1e-4, 200e-6, 0.5) == doctest::Approx(7.52e-7).epsilon(1e-3));
-  CHECK(dqmom::self_diffusivity(1e-4, 200e-6, 0.5) == doctest::Approx(std::sqrt(1e-4) * 200e-6 / (3 * std::sqrt(M_PI) * 0.5)));
+  // The self-diffusivity of eq. 6.24 lives in kinetic_theory/ (class_transport.hpp).
+  CHECK(fluidbed::kinetic_theory::self_diffusivity(1e-4, 200e-6, 0.5) == doctest::Approx(7.52e-7).epsilon(1e-3));
+  CHECK(fluidbed::kinetic_theory::self_diffusivity(1e-4, 200e-6, 0.5) ==
+        doctest::Approx(std::sqrt(1e-4) * 200e-6 / (3 * std::sqrt(M_PI) * 0.5)));
   CHECK(dqmom::upwind_numerical_diffusivity(0.10, 5e-3) == doctest::Approx(2.5e-4));
   CHECK(dqmom::upwind_numerical_diffusivity(-0.10, 5e-3) == doctest::Approx(2.5e-4));
   CHECK(dqmom::diffusion_intensity(2.5e-4, 0.3, 4e-4) == doctest::Approx(3e-8));

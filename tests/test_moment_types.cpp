@@ -492,7 +492,6 @@ TEST_CASE_TEMPLATE("types: dqmom.hpp and dqmom_batched.hpp — growth identities
   const std::array<T, 3> u{T(1), T(1), T(1)};
   CHECK(close(dqmom::moment_velocity<T, 3>(w, x, std::span<const T>(u), T(3)), T(1), 8));
   CHECK(close(dqmom::upwind_moment_flux(w, x, w, x, std::span<const T>(u), T(0)), T(0.875), 8));
-  CHECK(close(dqmom::self_diffusivity(T(1), T(3), T(1)), T(1) / std::sqrt(T(3.14159265358979323846264338327950288L)), 8));
   CHECK(dqmom::upwind_numerical_diffusivity(T(2), T(0.5)) == T(0.5));
   CHECK(dqmom::diffusion_intensity(T(2), T(0.5), T(0.25)) == T(0.25));
   std::array<T, 6> m{};

@@ -557,15 +557,9 @@ FLUIDBED_HOST_DEVICE constexpr T diffusion_intensity(const T& diffusivity, const
   return diffusivity * weight * node_gradient_squared;
 }
 
-// The particles' self-diffusivity of kinetic theory, 𝒟 = √Θ d / (3√π φ) [m²/s] (thesis eq. 6.24,
-// after Gidaspow (1994), Multiphase Flow and Fluidization, Academic Press): Θ the granular
-// temperature [m²/s²], d the diameter [m], φ the solids fraction. Θ = 1e-4, d = 200 µm, φ = 0.5
-// give 7.52e-7 m²/s.
-template <class T>
-FLUIDBED_HOST_DEVICE T self_diffusivity(const T& granular_temperature, const T& diameter, const T& solids_fraction) {
-  return std::sqrt(granular_temperature) * diameter /
-         (T(3) * std::sqrt(T(3.14159265358979323846264338327950288L)) * solids_fraction);
-}
+// The particles' self-diffusivity 𝒟 of kinetic theory (thesis eq. 6.24), the physical diffusivity
+// these sources are usually given, is fluidbed::kinetic_theory::self_diffusivity
+// (kinetic_theory/class_transport.hpp; a higher layer than moments/, so not included here).
 
 // The numerical diffusivity of first-order upwinding, 𝒟_n = u Δx / 2 [m²/s] (thesis eq. 6.25, after
 // Ferziger & Perić (2002), Computational Methods for Fluid Dynamics, Springer): the leading
