@@ -193,20 +193,9 @@ struct UnequalTemperatureMixture {
   template <class T, std::size_t N>
   FLUIDBED_HOST_DEVICE ClassKineticValues<ClassSensitivity<T, N>, N> with_derivatives(
       const GranularClassesState<T, N>& s) const {
-    using D = Dual<T, int(2 * N)>;
-    std::array<D, N> fractions{}, temperatures{};
-    for (std::size_t m = 0; m < N; ++m) {
-      fractions[m] = D::variable(s.fractions[m], int(m));
-      temperatures[m] = D::variable(s.temperatures[m], int(N + m));
-    }
-    return detail::map_class_values<ClassSensitivity<T, N>>(evaluate<D>(fractions, temperatures, s), [](const D& x) {
-      ClassSensitivity<T, N> r{x.value, {}, {}};
-      for (std::size_t m = 0; m < N; ++m) {
-        r.d_fractions[m] = x.derivative[m];
-        r.d_temperatures[m] = x.derivative[N + m];
-      }
-      return r;
-    });
+    const DualState<T, N> x(s);
+    return detail::map_class_values<ClassSensitivity<T, N>>(evaluate(x.fractions, x.temperatures, s),
+                                                            &DualState<T, N>::split);
   }
 
   // The terms of the pair (i, k) (hot path, i, k < N).
@@ -214,7 +203,21 @@ struct UnequalTemperatureMixture {
   FLUIDBED_HOST_DEVICE ClassPairTerms<T> pair_terms(const GranularClassesState<T, N>& s, std::size_t i,
                                                     std::size_t k) const {
     FLUIDBED_EXPECTS(detail::class_state_within(s) && i < N && k < N);
-    return pair<T>(s.fractions, s.temperatures, s, i, k);
+    return pair(s.fractions, s.temperatures, s, i, k);
+  }
+
+  // The same with ∂/∂α_m and ∂/∂Θ_m of each term.
+  template <class T, std::size_t N>
+  FLUIDBED_HOST_DEVICE ClassPairTerms<ClassSensitivity<T, N>> pair_terms_with_derivatives(
+      const GranularClassesState<T, N>& s, std::size_t i, std::size_t k) const {
+    FLUIDBED_EXPECTS(detail::class_state_within(s) && i < N && k < N);
+    const DualState<T, N> x(s);
+    const auto t = pair(x.fractions, x.temperatures, s, i, k);
+    const auto split = &DualState<T, N>::split;
+    return {split(t.radial_distribution), split(t.contact_factor),       split(t.pressure),
+            split(t.viscosity_own),       split(t.viscosity_partner),    split(t.conductivity_own),
+            split(t.conductivity_partner), split(t.energy_sink),         split(t.drag),
+            split(t.segregation)};
   }
 
   // Validates the state and the radial distribution's parameters (std::domain_error naming the
@@ -245,6 +248,27 @@ struct UnequalTemperatureMixture {
   }
 
  private:
+  // The fractions and temperatures as the 2N variables of a Dual evaluation.
+  template <class T, std::size_t N>
+  struct DualState {
+    using D = Dual<T, int(2 * N)>;
+    std::array<D, N> fractions{}, temperatures{};
+    FLUIDBED_HOST_DEVICE explicit DualState(const GranularClassesState<T, N>& s) {
+      for (std::size_t m = 0; m < N; ++m) {
+        fractions[m] = D::variable(s.fractions[m], int(m));
+        temperatures[m] = D::variable(s.temperatures[m], int(N + m));
+      }
+    }
+    FLUIDBED_HOST_DEVICE static ClassSensitivity<T, N> split(const D& x) {
+      ClassSensitivity<T, N> r{x.value, {}, {}};
+      for (std::size_t m = 0; m < N; ++m) {
+        r.d_fractions[m] = x.derivative[m];
+        r.d_temperatures[m] = x.derivative[N + m];
+      }
+      return r;
+    }
+  };
+
   // What the pair (i, k) shares with (k, i): the symmetric factors of the header's equations.
   template <class S>
   struct SymmetricPair {
