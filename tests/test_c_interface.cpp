@@ -953,6 +953,16 @@ TEST_CASE("C interface: the catalogue, metadata and parameters are the registrie
 
   const Handle wen_yu = create("WenYu1966");
   CHECK(fluidbed_closure_family(wen_yu.get()) == FLUIDBED_DRAG_LAW);
+  // The wall laws: by name, family and parameters (no array evaluation through C yet).
+  const Handle wall = create("JenkinsLougeWall");
+  CHECK(fluidbed_closure_family(wall.get()) == FLUIDBED_WALL_BOUNDARY_CONDITION);
+  CHECK(std::string(fluidbed_family_what(FLUIDBED_WALL_BOUNDARY_CONDITION)) == "wall boundary condition");
+  CHECK(fluidbed_closure_parameter_count(wall.get()) == 3);
+  double friction = 0;
+  fluidbed_error wall_error{};
+  CHECK(fluidbed_closure_get_parameter(wall.get(), "wall_friction", &friction, &wall_error) == FLUIDBED_OK);
+  CHECK(friction == 0.1);
+  CHECK(fluidbed_closure_set_parameter(wall.get(), "wall_restitution", 1.5, &wall_error) == FLUIDBED_DOMAIN_ERROR);
   CHECK(std::string(fluidbed_closure_reference(wen_yu.get())) ==
         std::visit([](const auto& l) { return std::string(l.reference()); }, drag::DragLaws::make("WenYu1966")));
   REQUIRE(fluidbed_closure_validity_count(wen_yu.get()) == 2);

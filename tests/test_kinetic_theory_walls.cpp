@@ -218,6 +218,28 @@ TEST_CASE("energy flux sign: into the bed above OpenFOAM's reference temperature
   CHECK(JenkinsLougeWall{0.5, 0.9}(phi, theta, g0, 1.0, glass).energy_flux > 0);  // 9.975 > 0.6
 }
 
+TEST_CASE("Jenkins-Louge wall against MFiX's arrangement of Jenkins and Louge's eqs. 2 and 3") {
+  // MFiX (calc_grbdry.f F_HW, bc_theta.f THETA_HW_CW, JENKINS option), written as MFiX groups it:
+  // F_2 = tan_Phi_w ρ_s φ (1 + 4ηφg0) Θ/u, HW = (3/8)√(3Θ)(1 − e_w) ρ_s φ (1 + 4ηφg0),
+  // CW = tan_Phi_w² (1 + e_w)(21/16)√(3Θ) ρ_s φ (1 + 4ηφg0) Θ, η = (1 + e)/2; MFiX has no slip floor,
+  // so u ≫ u_0 here.
+  for (const double mu : {0.05, 0.1, 0.4})
+    for (const double e_w : {0.2, 0.9})
+      for (const double phi : {0.01, 0.2, 0.5})
+        for (const double theta : {1e-4, 0.03}) {
+          const double slip = 0.7, g0 = sinclair_jackson(phi), eta = (1 + glass.restitution) / 2;
+          const double density_factor = glass.density * phi * (1 + 4 * eta * phi * g0);
+          const double f2 = mu * density_factor * theta / slip;
+          const double hw = 3.0 / 8.0 * std::sqrt(3 * theta) * (1 - e_w) * density_factor;
+          const double cw = mu * mu * (1 + e_w) * 21.0 / 16.0 * std::sqrt(3 * theta) * density_factor * theta;
+          const auto w = JenkinsLougeWall{mu, e_w}(phi, theta, g0, slip, glass);
+          CHECK(w.slip_coefficient == doctest::Approx(f2).epsilon(1e-11));  // (u_0/u)² = 2e-12
+          CHECK(w.dissipation_coefficient == doctest::Approx(hw).epsilon(1e-14));
+          CHECK(w.generation == doctest::Approx(cw).epsilon(1e-14));
+          CHECK(w.energy_flux == doctest::Approx(cw - hw * theta).epsilon(1e-13));
+        }
+}
+
 TEST_CASE("wall derivatives agree with central finite differences") {
   const double phi = 0.25, theta = 0.04, slip = 0.6, h = 1e-6;
   const auto check = [&](const auto& law) {

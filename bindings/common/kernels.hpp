@@ -46,10 +46,12 @@ enum Family : std::size_t {
   frictional_stresses = 15,
   gas_exchange_sources = 16,
   solid_solid_drags = 17,
+  wall_boundary_conditions = 18,
 };
 static_assert(std::is_same_v<RegistryOf<drag_laws>, drag::DragLaws> &&
                   std::is_same_v<RegistryOf<frictional_stresses>, kinetic_theory::FrictionalStresses> &&
-                  family_count == 18,
+                  std::is_same_v<RegistryOf<wall_boundary_conditions>, kinetic_theory::WallBoundaryConditions> &&
+                  family_count == 19,
               "Family follows the order of fluidbed::Registries");
 
 // Throws InvalidArgument unless every required array is there (any may be null when n is 0).

@@ -48,7 +48,8 @@ module fluidbed
                                 FLUIDBED_FAMILY_FRICTIONAL_STRESS = 15, &
                                 FLUIDBED_FAMILY_GAS_EXCHANGE_SOURCE = 16, &
                                 FLUIDBED_FAMILY_SOLID_SOLID_DRAG = 17, &
-                                FLUIDBED_FAMILY_COUNT = 18
+                                FLUIDBED_FAMILY_WALL_BOUNDARY_CONDITION = 18, &
+                                FLUIDBED_FAMILY_COUNT = 19
   ! Buoyancy conventions (fluidbed_buoyancy): classical −φ ρ_f g, or pressure gradient −φ ∇p
   ! (MFiX model A, OpenFOAM, Fluent); β_pressure_gradient = ε β_classical.
   integer, parameter, public :: FLUIDBED_BUOYANCY_CLASSICAL = 0, &

@@ -30,6 +30,6 @@ using Registries = RegistryList<
     kinetic_theory::MixtureRadialDistributions, kinetic_theory::GranularPressures, kinetic_theory::ShearViscosities,
     kinetic_theory::BulkViscosities, kinetic_theory::Conductivities, kinetic_theory::Dissipations,
     kinetic_theory::FrictionalPressures, kinetic_theory::FrictionalViscosities, kinetic_theory::FrictionalStresses,
-    kinetic_theory::GasExchangeSources, kinetic_theory::SolidSolidDrags>;
+    kinetic_theory::GasExchangeSources, kinetic_theory::SolidSolidDrags, kinetic_theory::WallBoundaryConditions>;
 
 }  // namespace fluidbed

@@ -128,6 +128,9 @@ FLUIDBED_HOST_DEVICE double evaluate_closure(const Law& law, int i) {
   } else if constexpr (std::is_same_v<Registry, SolidSolidDrags>) {
     (void)law.with_derivatives(0.6 * phi, 0.4 * phi, particles, small, 0.9, g0, slip);
     return law(0.6 * phi, 0.4 * phi, particles, small, 0.9, g0, slip);
+  } else if constexpr (std::is_same_v<Registry, WallBoundaryConditions>) {
+    (void)law.with_derivatives(phi, theta, rdf, slip, m);
+    return law(phi, theta, g0, slip, m).energy_flux;
   } else {
     static_assert(sizeof(Law) == 0, "a registry without a calling shape in evaluate_closure");
     return 0;

@@ -82,7 +82,8 @@ typedef enum fluidbed_family {
   FLUIDBED_FRICTIONAL_STRESS = 15,
   FLUIDBED_GAS_EXCHANGE_SOURCE = 16,
   FLUIDBED_SOLID_SOLID_DRAG = 17,
-  FLUIDBED_FAMILY_COUNT = 18,
+  FLUIDBED_WALL_BOUNDARY_CONDITION = 18, /* by name and parameters only: no array evaluation yet */
+  FLUIDBED_FAMILY_COUNT = 19,
   FLUIDBED_FAMILY_MAX_ENUM = 0x7fffffff
 } fluidbed_family;
 

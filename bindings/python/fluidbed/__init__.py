@@ -28,7 +28,8 @@ from ._closure_docs import SECTIONS as _SECTIONS
 __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidArgument", "closure", "closure_names",
            "Closure", "DragLaw", "SphereDragCoefficient", "ReynoldsOfArchimedes", "RichardsonZakiExponent",
            "ElasticModulus", "RadialDistribution", "FrictionalPressure", "ConstitutiveLaw", "FrictionalViscosity",
-           "FrictionalStress", "MixtureRadialDistribution", "GasExchangeSource", "SolidSolidDrag", "CONVENTIONS",
+           "FrictionalStress", "MixtureRadialDistribution", "GasExchangeSource", "SolidSolidDrag", "WallBoundaryCondition",
+           "CONVENTIONS",
            "invert", "INVERSION_STATUSES", "realizability", "correct", "CORRECTION_STATUSES", "dqmom_sources",
            "dqmom_growth_diffusion_sources", "DQMOM_STATUSES"]
 
@@ -355,6 +356,13 @@ class SolidSolidDrag(Closure):
         return SolidSolid(*r) if derivatives else r[0]
 
 
+class WallBoundaryCondition(Closure):
+    """A wall boundary condition of the solids phase: by name, with its parameters and metadata (its
+    evaluation over arrays is offered in C++ only so far, kinetic_theory/walls.hpp)."""
+
+    family = 18
+
+
 class GasExchangeSource(Closure):
     family = 16
 
@@ -517,13 +525,13 @@ def invert(moments, *, support="positive_half_line"):
 _CLASS_OF_FAMILY = {0: SphereDragCoefficient, 1: TerminalVelocity, 2: RichardsonZakiExponent, 3: MinimumFluidization,
                     4: DragLaw, 5: ElasticModulus, 6: RadialDistribution, 7: MixtureRadialDistribution,
                     13: FrictionalPressure, 14: FrictionalViscosity, 15: FrictionalStress, 16: GasExchangeSource,
-                    17: SolidSolidDrag, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
+                    17: SolidSolidDrag, 18: WallBoundaryCondition, **{f: ConstitutiveLaw for f in ConstitutiveLaw.families}}
 _NAMESPACES = {0: "sphere_drag_coefficients", 1: "terminal_velocities", 2: "richardson_zaki_exponents",
                3: "minimum_fluidizations", 4: "drag_laws", 5: "elastic_moduli", 6: "radial_distributions",
                7: "mixture_radial_distributions", 8: "granular_pressures", 9: "shear_viscosities",
                10: "bulk_viscosities", 11: "conductivities", 12: "dissipations", 13: "frictional_pressures",
                14: "frictional_viscosities", 15: "frictional_stresses", 16: "gas_exchange_sources",
-               17: "solid_solid_drags"}
+               17: "solid_solid_drags", 18: "wall_boundary_conditions"}
 
 
 def _documentation(c):

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 #include <string_view>
 
@@ -312,6 +313,98 @@ struct SrivastavaSundaresan : KineticTheoryLaw<SrivastavaSundaresan> {
     const S pressure = critical * pow(1 - u, n - 1);
     const S viscosity = detail::non_negative_part((sqrt2 * sin_angle / 2) * (pressure * (1 + (n - 1) * u)) / zeta);
     return {pressure, viscosity};
+  }
+};
+
+// The frictional pressures of N solids classes with their derivatives in every class fraction.
+template <class T, std::size_t N>
+struct ClassFrictionalPressureDerivatives {
+  std::array<T, N> value;                       // p_i^f [Pa]
+  std::array<std::array<T, N>, N> d_fractions;  // d_fractions[i][m] = ∂p_i^f/∂φ_m
+};
+
+// The mixture's frictional pressure split among N solids classes by mass fraction (seed 004,
+// slide "Frictional transfer", after Johnson & Jackson 1987 and Anderson & Jackson 1992):
+//   p_i^f = [φ_i ρ_i / Σ_j φ_j ρ_j] p^f(φ_t),   φ_t = Σ_j φ_j,
+// p^f the mixture's law of this header (`total`: JohnsonJacksonPressure, SchaefferPressure, …;
+// a host holding the FrictionalPressures variant visits it), φ_i the class volume fractions, ρ_i
+// their material densities [kg m⁻³]. Pressure-positive, per unit volume of suspension, like
+// every pressure of the library; seed 004 writes the frictional stress tension-positive,
+// Σ_i^f = −p_i^f I + 2μ_i^f S_i, and p_i^f here is the p_i^f of that −p I. The split sums to
+// p^f(φ_t) (to rounding) and one class gets the law itself, exactly. With no solids (every
+// φ_i = 0) each p_i^f is 0, not 0/0. Derivatives: ∂p_i^f/∂φ_m = (ρ_m/M)(δ_im − x_i) p^f + x_i
+// dp^f/dφ_t, x_i = φ_iρ_i/M, M = Σ_j φ_jρ_j (by dual numbers). Preconditions (asserted in
+// debug builds; checked(…) throws std::domain_error naming the argument): φ_i ≥ 0, Σφ_i < 1,
+// ρ_i > 0, and the law's own. Validity: the law's, at φ_t.
+template <class Pressure>
+struct ClassFrictionalPressures {
+  Pressure total;  // p^f(φ_t) of the whole solids phase
+
+  static constexpr std::string_view reference() {
+    return "seed 004 (slide \"Frictional transfer\"): split by mass fraction; the law's own reference for p^f";
+  }
+  constexpr auto validity() const { return total.validity(); }
+
+  // Hot path: p_i^f for each class.
+  template <class S, class T, std::size_t N>
+  FLUIDBED_HOST_DEVICE constexpr std::array<S, N> operator()(const std::array<S, N>& fractions,
+                                                             const std::array<T, N>& densities) const {
+    static_assert(N >= 1, "at least one solids class");
+    S total_fraction(0), total_mass(0);
+    for (std::size_t i = 0; i < N; ++i) {
+      FLUIDBED_EXPECTS(value_of(fractions[i]) >= 0 && densities[i] > 0);
+      total_fraction = total_fraction + fractions[i];  // (Dual has no +=)
+      total_mass = total_mass + fractions[i] * densities[i];
+    }
+    std::array<S, N> split{};
+    if (!(value_of(total_mass) > 0)) return split;
+    const S pressure = total(total_fraction);
+    // (φ_iρ_i/M) p rather than φ_iρ_i (p/M): one class gets exactly 1 · p.
+    for (std::size_t i = 0; i < N; ++i) split[i] = (fractions[i] * densities[i] / total_mass) * pressure;
+    return split;
+  }
+
+  // p_i^f and ∂p_i^f/∂φ_m for every class i and m (hot path).
+  template <class T, std::size_t N>
+  FLUIDBED_HOST_DEVICE ClassFrictionalPressureDerivatives<T, N> with_derivatives(
+      const std::array<T, N>& fractions, const std::array<T, N>& densities) const {
+    using D = Dual<T, int(N)>;
+    std::array<D, N> dual_fractions{};
+    for (std::size_t m = 0; m < N; ++m) dual_fractions[m] = D::variable(fractions[m], int(m));
+    const std::array<D, N> split = (*this)(dual_fractions, densities);
+    ClassFrictionalPressureDerivatives<T, N> result{};
+    for (std::size_t i = 0; i < N; ++i) {
+      result.value[i] = split[i].value;
+      for (std::size_t m = 0; m < N; ++m) result.d_fractions[i][m] = split[i].derivative[m];
+    }
+    return result;
+  }
+
+  template <class T, std::size_t N>
+  std::array<T, N> checked(const std::array<T, N>& fractions, const std::array<T, N>& densities) const {
+    require_valid(fractions, densities);
+    return (*this)(fractions, densities);
+  }
+  template <class T, std::size_t N>
+  ClassFrictionalPressureDerivatives<T, N> checked_with_derivatives(const std::array<T, N>& fractions,
+                                                                    const std::array<T, N>& densities) const {
+    require_valid(fractions, densities);
+    return with_derivatives(fractions, densities);
+  }
+
+  // Throws as `checked` would, without evaluating: each φ_i ≥ 0 and ρ_i > 0, Σφ_i < 1
+  // ("kinetic_theory::ClassFrictionalPressures"), then the law's argument and parameters.
+  template <class T, std::size_t N>
+  void require_valid(const std::array<T, N>& fractions, const std::array<T, N>& densities) const {
+    constexpr std::string_view function = "kinetic_theory::ClassFrictionalPressures";
+    T total_fraction(0);
+    for (std::size_t i = 0; i < N; ++i) {
+      require_in(function, indexed_argument("fractions", i), fractions[i], domains::non_negative<T>());
+      require_in(function, indexed_argument("densities", i), densities[i], domains::positive<T>());
+      total_fraction += fractions[i];
+    }
+    require_in(function, "sum of fractions", total_fraction, domains::closed_open(T(0), T(1)));
+    total.require_valid(total_fraction);
   }
 };
 

@@ -201,18 +201,23 @@ inline constexpr double default_wall_slip_floor = 1e-6;
 //   generation = (21/16)√3 μ_w² (1 + e_w) N √Θ,
 //   dissipation = (3/8)√3 (1 − e_w) N √Θ,
 // as MFiX implements Jenkins & Louge's eqs. (2)–(3) (its JENKINS option, F_2, HW and CW of the
-// same names). The shear is Coulomb's, μ_w N against the slip; in this limit the work of the
-// wall's friction on the slip is dissipated in the sliding contacts and the slip drops out of
-// the energy flux, which keeps a μ_w² term (the part of the sliding work returned to the
-// fluctuations) and the normal inelastic loss. The (1 − e_w) (not 1 − e_w²) and both constants
-// are those of MFiX's reading (a Maxwellian average of the same collision model gives the same
-// two terms with √(2/π) for (3/8)√3 and (7/2)√(2/π) for (21/16)√3, both 1.2284 times larger:
-// the ratio of the two terms, which fixes the sign of q_w, is the same). u_0 =
-// slip_floor (default 10⁻⁶ m s⁻¹) smooths the Coulomb sign at u = 0, where MFiX sets k = 0
-// (free slip) and the exact law is singular (k = μ_w N/u): k is finite everywhere, and
-// |τ_w| → μ_w N for u ≫ u_0. Registered with μ_w = 0.1 (a small friction, as the limit
-// requires; no seed gives one) and e_w = 0.9 (seed 001's later run). Validity: small μ_w, no
-// stated range (Validity<0>).
+// same names). Checked for issue 18: the paper's text was not available to us; MFiX's source
+// (calc_grbdry.f F_HW and bc_theta.f THETA_HW_CW, two versions, both citing "Jenkins and Louge,
+// Phys. Fluids 9 (10), 2835", eqs. (2) and (3)) evaluates k = μ_w ρ_s φ(1 + 4ηφg0)Θ/u,
+// A = (3/8)√(3Θ)(1 − e_w) ρ_s φ(1 + 4ηφg0), generation = μ_w²(1 + e_w)(21/16)√(3Θ) ρ_s φ(1 + 4ηφg0)Θ
+// with η = (1 + e)/2: the forms below term by term (the tests evaluate MFiX's arrangement). In
+// the all-sliding limit the tangential restitution β_0 of sticking contacts does not enter.
+// The shear is Coulomb's, μ_w N against the slip; in this limit the work of the wall's friction
+// on the slip is dissipated in the sliding contacts and the slip drops out of the energy flux,
+// which keeps a μ_w² term (the part of the sliding work returned to the fluctuations) and the
+// normal inelastic loss. The (1 − e_w) (not 1 − e_w²) and both constants are those of MFiX's
+// reading (a Maxwellian average of the same collision model gives the same two terms with
+// √(2/π) for (3/8)√3 and (7/2)√(2/π) for (21/16)√3, both 1.2284 times larger: the ratio of the
+// two terms, which fixes the sign of q_w, is the same). u_0 = slip_floor (default 10⁻⁶ m s⁻¹)
+// smooths the Coulomb sign at u = 0, where MFiX sets k = 0 (free slip) and the exact law is
+// singular (k = μ_w N/u): k is finite everywhere, and |τ_w| → μ_w N for u ≫ u_0. Registered
+// with μ_w = 0.1 (a small friction, as the limit requires; no seed gives one) and e_w = 0.9
+// (seed 001's later run). Validity: small μ_w, no stated range (Validity<0>).
 struct JenkinsLougeWall : WallLaw<JenkinsLougeWall> {
   double wall_friction;                             // μ_w ≥ 0
   double wall_restitution;                          // e_w ∈ [0, 1]
