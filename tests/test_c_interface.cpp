@@ -884,6 +884,159 @@ TEST_CASE("C interface: DQMOM sources, moment and point-functional forms, bit fo
   CHECK(b[1] == 0);
 }
 
+TEST_CASE("C interface: the unequal-temperature mixture, 1 to 4 classes, each mixture radial distribution, values and derivatives bit for bit") {
+  constexpr std::size_t n = 7;  // cells
+  // The C++ quantities in the C layout: quantity q's entry e (i, or i N + k) of a cell.
+  const auto entries_of = []<class V, std::size_t N>(const kinetic_theory::ClassKineticValues<V, N>& v) {
+    std::array<std::vector<V>, 8> q;
+    for (std::size_t i = 0; i < N; ++i) {
+      q[0].push_back(v.pressure[i]);
+      q[4].push_back(v.dissipation[i]);
+      for (std::size_t k = 0; k < N; ++k) {
+        q[1].push_back(v.shear_viscosity[i][k]);
+        q[2].push_back(v.bulk_viscosity[i][k]);
+        q[3].push_back(v.conductivity[i][k]);
+        q[5].push_back(v.drag[i][k]);
+        q[6].push_back(v.segregation[i][k]);
+        q[7].push_back(v.radial_distribution[i][k]);
+      }
+    }
+    return q;
+  };
+  const auto compare = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+    for (const auto& law : kinetic_theory::MixtureRadialDistributions::all()) {
+      const std::string name(kinetic_theory::MixtureRadialDistributions::name_of(law));
+      INFO(N << " classes, " << name);
+      const Handle radial = create(name);
+      std::vector<double> fractions(N * n), temperatures(N * n), diameters(N * n), densities(N * n), restitution(n);
+      std::vector<kinetic_theory::GranularClassesState<double, N>> states(n);
+      for (std::size_t c = 0; c < n; ++c) {
+        auto& s = states[c];
+        for (std::size_t m = 0; m < N; ++m) {
+          s.fractions[m] = (0.05 + 0.45 * double(c) / double(n)) / double(N) * (1 + 0.2 * double(m));  // Σ α < 0.57
+          s.temperatures[m] = 1e-3 * (1 + double((c + 2 * m) % 5)) * (m == 1 ? 3 : 1);
+          s.diameters[m] = 1e-4 * (1 + 0.7 * double(m));
+          s.densities[m] = 2500 - 400 * double(m);
+          fractions[m * n + c] = s.fractions[m], temperatures[m * n + c] = s.temperatures[m];
+          diameters[m * n + c] = s.diameters[m], densities[m * n + c] = s.densities[m];
+        }
+        s.restitution = restitution[c] = 0.7 + 0.3 * double(c) / double(n - 1);  // e = 1 in the last cell
+      }
+      const std::array<std::size_t, 8> sizes{N * n, N * N * n, N * N * n, N * N * n, N * n, N * N * n, N * N * n,
+                                             N * N * n};
+      std::array<std::vector<double>, 8> values, plain, by_fraction, by_temperature;
+      for (std::size_t q = 0; q < 8; ++q) {
+        values[q].assign(sizes[q], -1), plain[q].assign(sizes[q], -1);
+        by_fraction[q].assign(N * sizes[q], -1), by_temperature[q].assign(N * sizes[q], -1);
+      }
+      fluidbed_error error{};
+      REQUIRE_MESSAGE(fluidbed_unequal_temperature_mixture(
+                          radial.get(), n, N, fractions.data(), temperatures.data(), diameters.data(), densities.data(),
+                          restitution.data(), plain[0].data(), plain[1].data(), plain[2].data(), plain[3].data(),
+                          plain[4].data(), plain[5].data(), plain[6].data(), plain[7].data(), &error) == FLUIDBED_OK,
+                      error.message);
+      std::array<double*, 24> out{};
+      for (std::size_t q = 0; q < 8; ++q)
+        out[3 * q] = values[q].data(), out[3 * q + 1] = by_fraction[q].data(), out[3 * q + 2] = by_temperature[q].data();
+      REQUIRE_MESSAGE(fluidbed_unequal_temperature_mixture_with_derivatives(
+                          radial.get(), n, N, fractions.data(), temperatures.data(), diameters.data(), densities.data(),
+                          restitution.data(), out[0], out[1], out[2], out[3], out[4], out[5], out[6], out[7], out[8],
+                          out[9], out[10], out[11], out[12], out[13], out[14], out[15], out[16], out[17], out[18],
+                          out[19], out[20], out[21], out[22], out[23], &error) == FLUIDBED_OK,
+                      error.message);
+      std::size_t compared = 0;
+      std::visit(
+          [&](const auto& rdf) {
+            const kinetic_theory::UnequalTemperatureMixture mixture{rdf};
+            for (std::size_t c = 0; c < n; ++c) {
+              INFO("cell " << c);
+              const auto value = entries_of(mixture.checked(states[c]));
+              const auto with = entries_of(mixture.checked_with_derivatives(states[c]));
+              for (std::size_t q = 0; q < 8; ++q)
+                for (std::size_t e = 0; e < value[q].size(); ++e) {
+                  INFO("quantity " << q << ", entry " << e);
+                  CHECK(same_bits(values[q][e * n + c], value[q][e]));
+                  CHECK(same_bits(plain[q][e * n + c], value[q][e]));
+                  for (std::size_t m = 0; m < N; ++m) {
+                    CHECK(same_bits(by_fraction[q][m * sizes[q] + e * n + c], with[q][e].d_fractions[m]));
+                    CHECK(same_bits(by_temperature[q][m * sizes[q] + e * n + c], with[q][e].d_temperatures[m]));
+                  }
+                  ++compared;
+                }
+            }
+          },
+          law);
+      CHECK(compared == n * (2 * N + 6 * N * N));
+      // Outputs not wanted are NULL: what is asked for is written alone, the same bits.
+      std::vector<double> pressure(N * n), d_pressure(N * N * n);
+      REQUIRE(fluidbed_unequal_temperature_mixture_with_derivatives(
+                  radial.get(), n, N, fractions.data(), temperatures.data(), diameters.data(), densities.data(),
+                  restitution.data(), pressure.data(), nullptr, d_pressure.data(), nullptr, nullptr, nullptr, nullptr,
+                  nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                  nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, &error) == FLUIDBED_OK);
+      CHECK(std::equal(pressure.begin(), pressure.end(), values[0].begin(), same_bits<double>));
+      CHECK(std::equal(d_pressure.begin(), d_pressure.end(), by_temperature[0].begin(), same_bits<double>));
+    }
+  };
+  [&]<std::size_t... M>(std::index_sequence<M...>) {
+    (compare(std::integral_constant<std::size_t, M + 1>{}), ...);
+  }(std::make_index_sequence<4>{});
+}
+
+TEST_CASE("C interface: bad input to the unequal-temperature mixture gives the checked API's error and the cell") {
+  const Handle radial = create("ModifiedMansoori");
+  // 3 cells of 2 classes; cell 1's class 1 is cold (Θ = 0), outside the theory's domain.
+  const double fractions[] = {0.2, 0.2, 0.2, 0.1, 0.1, 0.1}, temperatures[] = {1e-3, 1e-3, 1e-3, 2e-3, 0, 2e-3},
+               diameters[] = {1e-4, 1e-4, 1e-4, 2e-4, 2e-4, 2e-4}, densities[] = {2500, 2500, 2500, 1500, 1500, 1500},
+               restitution[] = {0.9, 0.9, 0.9};
+  std::array<double, 6> pressure;
+  pressure.fill(-1);
+  fluidbed_error error{};
+  CHECK(fluidbed_unequal_temperature_mixture(radial.get(), 3, 2, fractions, temperatures, diameters, densities,
+                                             restitution, pressure.data(), nullptr, nullptr, nullptr, nullptr, nullptr,
+                                             nullptr, nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(error.status == FLUIDBED_DOMAIN_ERROR);
+  CHECK(error.index == 1);
+  CHECK(pressure[0] != -1);  // written below the failing cell only
+  CHECK(pressure[1] == -1);
+  CHECK(pressure[2] == -1);
+  // The message is the C++ checked call's.
+  const kinetic_theory::GranularClassesState<double, 2> cold{{0.2, 0.1}, {1e-3, 0}, {1e-4, 2e-4}, {2500, 1500}, 0.9};
+  std::string expected;
+  try {
+    static_cast<void>(kinetic_theory::UnequalTemperatureMixture{}.checked(cold));
+  } catch (const std::domain_error& e) {
+    expected = e.what();
+  }
+  CHECK(expected.find("state.temperatures[1]") != std::string::npos);
+  CHECK(std::string(error.message) == expected);
+  // The radial distribution's own domain: Σ α < 1.
+  const double dense[] = {0.6, 0.5};
+  CHECK(fluidbed_unequal_temperature_mixture(radial.get(), 1, 2, dense, temperatures, diameters, densities, restitution,
+                                             pressure.data(), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                             nullptr, &error) == FLUIDBED_DOMAIN_ERROR);
+  CHECK(std::string(error.message).find("sum of fractions") != std::string::npos);
+  // Class counts, NULL inputs and closures of another family are invalid arguments.
+  for (const std::size_t classes : {std::size_t(0), std::size_t(FLUIDBED_MAX_CLASSES + 1)}) {
+    CHECK(fluidbed_unequal_temperature_mixture(radial.get(), 1, classes, fractions, temperatures, diameters, densities,
+                                               restitution, pressure.data(), nullptr, nullptr, nullptr, nullptr,
+                                               nullptr, nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+    CHECK(std::string(error.message).ends_with("classes; 1 to 10 are offered"));
+  }
+  CHECK(fluidbed_unequal_temperature_mixture(radial.get(), 3, 2, fractions, nullptr, diameters, densities, restitution,
+                                             pressure.data(), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                             nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  const Handle carnahan = create("CarnahanStarling");
+  CHECK(fluidbed_unequal_temperature_mixture(carnahan.get(), 3, 2, fractions, temperatures, diameters, densities,
+                                             restitution, pressure.data(), nullptr, nullptr, nullptr, nullptr, nullptr,
+                                             nullptr, nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+  CHECK(std::string(error.message) ==
+        "fluidbed: unequal_temperature_mixture: CarnahanStarling is not a mixture radial distribution");
+  CHECK(fluidbed_unequal_temperature_mixture(nullptr, 3, 2, fractions, temperatures, diameters, densities, restitution,
+                                             pressure.data(), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                             nullptr, &error) == FLUIDBED_INVALID_ARGUMENT);
+}
+
 TEST_CASE("C interface: bad input gives the checked API's error, the failing cell and its message") {
   const Handle law = create("SyamlalOBrien");
   const double voidage[] = {0.5, std::numeric_limits<double>::quiet_NaN(), 0.5};

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "any_closure.hpp"
+#include "fluidbed/kinetic_theory/unequal_temperature_mixture.hpp"
 #include "fluidbed/moments/batched.hpp"
 #include "fluidbed/moments/correction.hpp"
 #include "fluidbed/moments/dqmom.hpp"
@@ -353,6 +354,105 @@ void solid_solid_drag(const NamedClosure& law, std::size_t n, const T* phi_p, co
         });
       },
       closure);
+}
+
+// The quantities of kinetic_theory::ClassKineticValues, in the order the bindings pass them.
+enum ClassQuantity : std::size_t {
+  class_pressure,
+  class_shear_viscosity,
+  class_bulk_viscosity,
+  class_conductivity,
+  class_dissipation,
+  class_drag,
+  class_segregation,
+  class_radial_distribution,
+  class_quantity_count
+};
+
+// Where one quantity of the unequal-temperature mixture goes, each pointer null where it is not
+// wanted. Over n cells of N classes: entry e (e = i for p_i and γ_i, e = i N + k for the
+// matrices, row-major) of cell c at value[e n + c]; its derivative in α_m at
+// d_fractions[m S + e n + c] and in Θ_m at d_temperatures[m S + e n + c], S = (entries) n the
+// size of `value`: the derivatives in α_m are laid out as the quantity itself, m after m.
+template <class T>
+struct ClassOutput {
+  T* value = nullptr;
+  T* d_fractions = nullptr;
+  T* d_temperatures = nullptr;
+};
+template <class T>
+using ClassOutputs = std::array<ClassOutput<T>, class_quantity_count>;
+
+namespace detail {
+
+// f(quantity, entry, entries, x) for every entry x of `v`: the flattening of ClassOutput.
+template <class V, std::size_t N, class F>
+void for_each_class_entry(const kinetic_theory::ClassKineticValues<V, N>& v, F&& f) {
+  for (std::size_t i = 0; i < N; ++i) {
+    f(class_pressure, i, N, v.pressure[i]);
+    f(class_dissipation, i, N, v.dissipation[i]);
+    for (std::size_t k = 0; k < N; ++k) {
+      const std::size_t e = i * N + k;
+      f(class_shear_viscosity, e, N * N, v.shear_viscosity[i][k]);
+      f(class_bulk_viscosity, e, N * N, v.bulk_viscosity[i][k]);
+      f(class_conductivity, e, N * N, v.conductivity[i][k]);
+      f(class_drag, e, N * N, v.drag[i][k]);
+      f(class_segregation, e, N * N, v.segregation[i][k]);
+      f(class_radial_distribution, e, N * N, v.radial_distribution[i][k]);
+    }
+  }
+}
+
+}  // namespace detail
+
+// The kinetic theory of class_count classes with their own granular temperatures
+// (kinetic_theory::UnequalTemperatureMixture, h_ik the mixture radial distribution `radial` with
+// its parameters) over n cells: class m of cell c at fractions[m n + c] (α_m), temperatures[m n + c]
+// (Θ_m), diameters[m n + c] and densities[m n + c]; the restitution of cell c at restitution[c].
+// Outputs as ClassOutput says; the values from mixture.checked, the derivatives from
+// mixture.checked_with_derivatives (evaluated only where one is wanted).
+template <class T>
+void unequal_temperature_mixture(const NamedClosure& radial, std::size_t n, std::size_t class_count,
+                                 const T* fractions, const T* temperatures, const T* diameters, const T* densities,
+                                 const T* restitution, const ClassOutputs<T>& out) {
+  constexpr std::string_view function = "unequal_temperature_mixture";
+  const auto& closure = family_closure<mixture_radial_distributions>(radial, function);
+  if (class_count < 1 || class_count > max_classes)
+    throw InvalidArgument("fluidbed: unequal_temperature_mixture: " + std::to_string(class_count) +
+                          " classes; 1 to " + std::to_string(max_classes) + " are offered");
+  require_arrays(n, function, fractions, temperatures, diameters, densities, restitution);
+  bool derivatives = false;
+  for (const ClassOutput<T>& o : out) derivatives = derivatives || o.d_fractions != nullptr || o.d_temperatures != nullptr;
+  detail::with_compiled_count<max_classes>(class_count, [&]<std::size_t N>(detail::Count<N>) {
+    std::visit(
+        [&](const auto& rdf) {
+          const kinetic_theory::UnequalTemperatureMixture mixture{rdf};
+          for_each_cell(n, [&](std::size_t c) {
+            kinetic_theory::GranularClassesState<T, N> state{};
+            for (std::size_t m = 0; m < N; ++m) {
+              const std::size_t at = m * n + c;
+              state.fractions[m] = fractions[at], state.temperatures[m] = temperatures[at];
+              state.diameters[m] = diameters[at], state.densities[m] = densities[at];
+            }
+            state.restitution = restitution[c];
+            detail::for_each_class_entry(mixture.checked(state), [&](ClassQuantity q, std::size_t e, std::size_t,
+                                                                     T x) {
+              if (out[q].value != nullptr) out[q].value[e * n + c] = x;
+            });
+            if (!derivatives) return;
+            detail::for_each_class_entry(
+                mixture.checked_with_derivatives(state),
+                [&](ClassQuantity q, std::size_t e, std::size_t entries, const kinetic_theory::ClassSensitivity<T, N>& x) {
+                  for (std::size_t m = 0; m < N; ++m) {
+                    const std::size_t at = (m * entries + e) * n + c;
+                    if (out[q].d_fractions != nullptr) out[q].d_fractions[at] = x.d_fractions[m];
+                    if (out[q].d_temperatures != nullptr) out[q].d_temperatures[at] = x.d_temperatures[m];
+                  }
+                });
+          });
+        },
+        closure);
+  });
 }
 
 // The gas's production of granular energy and its derivatives in φ, Θ, β and w. Each source reads

@@ -104,7 +104,7 @@ module fluidbed
             fluidbed_frictional_stress, fluidbed_mixture_radial_distribution, fluidbed_solid_solid_drag, &
             fluidbed_gas_exchange_source, fluidbed_invert_moments, fluidbed_moment_realizability, &
             fluidbed_correction_default_options, fluidbed_correct_moments, fluidbed_dqmom_sources, &
-            fluidbed_dqmom_growth_diffusion_sources
+            fluidbed_dqmom_growth_diffusion_sources, fluidbed_unequal_temperature_mixture
 
   ! Whether the arrays agree in size (see sizes_agree_each).
   interface sizes_agree
@@ -352,6 +352,35 @@ module fluidbed
       real(c_double), intent(in) :: diameter(*), solid_density(*), restitution(*)
       real(c_double), intent(out) :: source(*)
       type(c_ptr), value :: d_solid_fraction, d_granular_temperature, d_beta, d_slip
+      type(fluidbed_c_error), intent(out) :: error
+    end function
+    integer(c_int) function c_unequal_temperature_mixture(radial, n, class_count, fractions, temperatures, diameters, &
+                                                          densities, restitution, pressure, d_pressure_d_fractions, &
+                                                          d_pressure_d_temperatures, shear_viscosity, &
+                                                          d_shear_viscosity_d_fractions, &
+                                                          d_shear_viscosity_d_temperatures, bulk_viscosity, &
+                                                          d_bulk_viscosity_d_fractions, &
+                                                          d_bulk_viscosity_d_temperatures, conductivity, &
+                                                          d_conductivity_d_fractions, d_conductivity_d_temperatures, &
+                                                          dissipation, d_dissipation_d_fractions, &
+                                                          d_dissipation_d_temperatures, drag, d_drag_d_fractions, &
+                                                          d_drag_d_temperatures, segregation, &
+                                                          d_segregation_d_fractions, d_segregation_d_temperatures, &
+                                                          radial_distribution, d_radial_distribution_d_fractions, &
+                                                          d_radial_distribution_d_temperatures, error) &
+        bind(C, name='fluidbed_unequal_temperature_mixture_with_derivatives')
+      import :: c_ptr, c_int, c_size_t, c_double, fluidbed_c_error
+      type(c_ptr), value :: radial
+      integer(c_size_t), value :: n, class_count
+      real(c_double), intent(in) :: fractions(*), temperatures(*), diameters(*), densities(*), restitution(*)
+      type(c_ptr), value :: pressure, d_pressure_d_fractions, d_pressure_d_temperatures, shear_viscosity, &
+                            d_shear_viscosity_d_fractions, d_shear_viscosity_d_temperatures, bulk_viscosity, &
+                            d_bulk_viscosity_d_fractions, d_bulk_viscosity_d_temperatures, conductivity, &
+                            d_conductivity_d_fractions, d_conductivity_d_temperatures, dissipation, &
+                            d_dissipation_d_fractions, d_dissipation_d_temperatures, drag, d_drag_d_fractions, &
+                            d_drag_d_temperatures, segregation, d_segregation_d_fractions, &
+                            d_segregation_d_temperatures, radial_distribution, d_radial_distribution_d_fractions, &
+                            d_radial_distribution_d_temperatures
       type(fluidbed_c_error), intent(out) :: error
     end function
     integer(c_int) function c_invert_moments(node_count, support, n, moments, nodes, weights, sizes, status, error) &
@@ -1109,6 +1138,105 @@ contains
     if (present(cell)) cell = int(error%index) + 1
   end function
 
+  ! The kinetic theory of classes with their own granular temperatures (Lathouwers & Bellan 2001;
+  ! fluidbed_unequal_temperature_mixture_with_derivatives), h_ik the mixture radial distribution
+  ! `radial` (FLUIDBED_FAMILY_MIXTURE_RADIAL_DISTRIBUTION, with its parameters). Class m of cell c
+  ! has fractions(c, m) = α_m >= 0 (Σ < 1), temperatures(c, m) = Θ_m > 0 [m^2 s^-2],
+  ! diameters(c, m) [m] and densities(c, m) [kg m^-3], shapes (cells, classes), 1 to
+  ! FLUIDBED_MAX_CLASSES classes; every pair of cell c has the restitution restitution(c). Every
+  ! output is optional (absent: not computed), per unit volume of suspension: pressure (p_i [Pa])
+  ! and dissipation (γ_i [W m^-3], a sink) shaped (cells, classes), element (c, i); the matrices
+  ! shear_viscosity (μ_ik [Pa s]), bulk_viscosity (λ_ik), conductivity (κ_ik [kg m^-1 s^-1]), drag
+  ! (β_ik [kg m^-3 s^-1]), segregation (s_ik [Pa]) and radial_distribution (h_ik) shaped
+  ! (cells, classes, classes) with element (c, k, i) = X_ik (C's row-major layout: the class i whose
+  ! quantity it is comes last); d_<X>_d_fractions and d_<X>_d_temperatures have X's shape with one
+  ! more last dimension, the class m: ∂X/∂α_m and ∂X/∂Θ_m.
+  integer function fluidbed_unequal_temperature_mixture(radial, fractions, temperatures, diameters, densities, &
+                                                        restitution, pressure, shear_viscosity, bulk_viscosity, &
+                                                        conductivity, dissipation, drag, segregation, &
+                                                        radial_distribution, d_pressure_d_fractions, &
+                                                        d_pressure_d_temperatures, d_shear_viscosity_d_fractions, &
+                                                        d_shear_viscosity_d_temperatures, &
+                                                        d_bulk_viscosity_d_fractions, &
+                                                        d_bulk_viscosity_d_temperatures, d_conductivity_d_fractions, &
+                                                        d_conductivity_d_temperatures, d_dissipation_d_fractions, &
+                                                        d_dissipation_d_temperatures, d_drag_d_fractions, &
+                                                        d_drag_d_temperatures, d_segregation_d_fractions, &
+                                                        d_segregation_d_temperatures, &
+                                                        d_radial_distribution_d_fractions, &
+                                                        d_radial_distribution_d_temperatures, message, cell) &
+      result(status)
+    type(fluidbed_closure), intent(in) :: radial
+    real(c_double), intent(in), contiguous, target :: fractions(:, :), temperatures(:, :), diameters(:, :), &
+                                                      densities(:, :), restitution(:)
+    real(c_double), intent(out), contiguous, target, optional :: pressure(:, :), dissipation(:, :), &
+                                                                 shear_viscosity(:, :, :), bulk_viscosity(:, :, :), &
+                                                                 conductivity(:, :, :), drag(:, :, :), &
+                                                                 segregation(:, :, :), radial_distribution(:, :, :)
+    real(c_double), intent(out), contiguous, target, optional :: &
+      d_pressure_d_fractions(:, :, :), d_pressure_d_temperatures(:, :, :), d_dissipation_d_fractions(:, :, :), &
+      d_dissipation_d_temperatures(:, :, :)
+    real(c_double), intent(out), contiguous, target, optional :: &
+      d_shear_viscosity_d_fractions(:, :, :, :), d_shear_viscosity_d_temperatures(:, :, :, :), &
+      d_bulk_viscosity_d_fractions(:, :, :, :), d_bulk_viscosity_d_temperatures(:, :, :, :), &
+      d_conductivity_d_fractions(:, :, :, :), d_conductivity_d_temperatures(:, :, :, :), &
+      d_drag_d_fractions(:, :, :, :), d_drag_d_temperatures(:, :, :, :), d_segregation_d_fractions(:, :, :, :), &
+      d_segregation_d_temperatures(:, :, :, :), d_radial_distribution_d_fractions(:, :, :, :), &
+      d_radial_distribution_d_temperatures(:, :, :, :)
+    character(len=:), allocatable, intent(out), optional :: message
+    integer, intent(out), optional :: cell
+    type(fluidbed_c_error) :: error
+    integer :: n, classes, j, per_class(2), matrix(3), per_class_slopes(3), matrix_slopes(4)
+    n = size(fractions, 1)
+    classes = size(fractions, 2)
+    per_class = [n, classes]
+    matrix = [n, classes, classes]
+    per_class_slopes = [n, classes, classes]
+    matrix_slopes = [n, classes, classes, classes]
+    if (sizes_agree(error, 'fluidbed_unequal_temperature_mixture', 'fractions', &
+                    [shape(temperatures), shape(diameters), shape(densities), size(restitution), &
+                     optional_shape(pressure, per_class), optional_shape(dissipation, per_class), &
+                     optional_shape3(shear_viscosity, matrix), optional_shape3(bulk_viscosity, matrix), &
+                     optional_shape3(conductivity, matrix), optional_shape3(drag, matrix), &
+                     optional_shape3(segregation, matrix), optional_shape3(radial_distribution, matrix), &
+                     optional_shape3(d_pressure_d_fractions, per_class_slopes), &
+                     optional_shape3(d_pressure_d_temperatures, per_class_slopes), &
+                     optional_shape3(d_dissipation_d_fractions, per_class_slopes), &
+                     optional_shape3(d_dissipation_d_temperatures, per_class_slopes), &
+                     optional_shape4(d_shear_viscosity_d_fractions, matrix_slopes), &
+                     optional_shape4(d_shear_viscosity_d_temperatures, matrix_slopes), &
+                     optional_shape4(d_bulk_viscosity_d_fractions, matrix_slopes), &
+                     optional_shape4(d_bulk_viscosity_d_temperatures, matrix_slopes), &
+                     optional_shape4(d_conductivity_d_fractions, matrix_slopes), &
+                     optional_shape4(d_conductivity_d_temperatures, matrix_slopes), &
+                     optional_shape4(d_drag_d_fractions, matrix_slopes), &
+                     optional_shape4(d_drag_d_temperatures, matrix_slopes), &
+                     optional_shape4(d_segregation_d_fractions, matrix_slopes), &
+                     optional_shape4(d_segregation_d_temperatures, matrix_slopes), &
+                     optional_shape4(d_radial_distribution_d_fractions, matrix_slopes), &
+                     optional_shape4(d_radial_distribution_d_temperatures, matrix_slopes)], &
+                    [per_class, per_class, per_class, n, per_class, per_class, (matrix, j = 1, 6), &
+                     (per_class_slopes, j = 1, 4), (matrix_slopes, j = 1, 12)])) &
+      status = c_unequal_temperature_mixture( &
+               radial%handle, int(n, c_size_t), int(classes, c_size_t), fractions, temperatures, &
+               diameters, densities, restitution, optional_matrix(pressure), optional_tensor3(d_pressure_d_fractions), &
+               optional_tensor3(d_pressure_d_temperatures), optional_tensor3(shear_viscosity), &
+               optional_tensor4(d_shear_viscosity_d_fractions), optional_tensor4(d_shear_viscosity_d_temperatures), &
+               optional_tensor3(bulk_viscosity), optional_tensor4(d_bulk_viscosity_d_fractions), &
+               optional_tensor4(d_bulk_viscosity_d_temperatures), optional_tensor3(conductivity), &
+               optional_tensor4(d_conductivity_d_fractions), optional_tensor4(d_conductivity_d_temperatures), &
+               optional_matrix(dissipation), optional_tensor3(d_dissipation_d_fractions), &
+               optional_tensor3(d_dissipation_d_temperatures), optional_tensor3(drag), &
+               optional_tensor4(d_drag_d_fractions), optional_tensor4(d_drag_d_temperatures), &
+               optional_tensor3(segregation), optional_tensor4(d_segregation_d_fractions), &
+               optional_tensor4(d_segregation_d_temperatures), optional_tensor3(radial_distribution), &
+               optional_tensor4(d_radial_distribution_d_fractions), &
+               optional_tensor4(d_radial_distribution_d_temperatures), error)
+    status = int(error%status)
+    if (present(message)) message = message_of(error)
+    if (present(cell)) cell = int(error%index) + 1
+  end function
+
   ! ---- The wrappers' helpers -----------------------------------------------------------------
 
   ! The wrappers' check of their arrays before C is called: whether `extents` (the sizes, or
@@ -1166,6 +1294,22 @@ contains
     if (present(array)) extents = shape(array)
   end function
 
+  function optional_shape3(array, expected) result(extents)
+    real(c_double), intent(in), optional :: array(:, :, :)
+    integer, intent(in) :: expected(3)
+    integer :: extents(3)
+    extents = expected
+    if (present(array)) extents = shape(array)
+  end function
+
+  function optional_shape4(array, expected) result(extents)
+    real(c_double), intent(in), optional :: array(:, :, :, :)
+    integer, intent(in) :: expected(4)
+    integer :: extents(4)
+    extents = expected
+    if (present(array)) extents = shape(array)
+  end function
+
   ! An optional array as a C pointer: c_null_ptr where absent (or empty).
   type(c_ptr) function optional_array(array) result(address)
     real(c_double), intent(in), contiguous, target, optional :: array(:)
@@ -1188,6 +1332,22 @@ contains
     address = c_null_ptr
     if (present(array)) then
       if (size(array) > 0) address = c_loc(array(1, 1))
+    end if
+  end function
+
+  type(c_ptr) function optional_tensor3(array) result(address)
+    real(c_double), intent(in), contiguous, target, optional :: array(:, :, :)
+    address = c_null_ptr
+    if (present(array)) then
+      if (size(array) > 0) address = c_loc(array(1, 1, 1))
+    end if
+  end function
+
+  type(c_ptr) function optional_tensor4(array) result(address)
+    real(c_double), intent(in), contiguous, target, optional :: array(:, :, :, :)
+    address = c_null_ptr
+    if (present(array)) then
+      if (size(array) > 0) address = c_loc(array(1, 1, 1, 1))
     end if
   end function
 

@@ -33,6 +33,10 @@
 !  - DQMOM sources: pure growth gives c^φ = 3φG/ξ and c^ξ = 4φG (the point functionals, to a few
 !    ulp; the moment sources, within the condition number), a cell with merged nodes, the wrappers'
 !    bits equal to the C functions', and arrays of the wrong shape;
+!  - the unequal-temperature mixture: the wrapper's values and derivatives equal to the C function's
+!    bits (3 classes, 4 cells); one class gives Lun's pressure αρΘ(1 + 2(1 + e)α h) with h the
+!    returned contact value (1e-14); μ_12/μ_21 = m_1Θ_1/(m_2Θ_2), which fixes the (cell, k, i)
+!    layout; β and s symmetric with a zero diagonal, λ = (5/3)μ; Σ_i γ_i = 0 at e = 1; bad input;
 !  - the catalogue and the closures' metadata;
 !  - bad input: arrays of different sizes or shapes, NaN fractions (the status, the 1-based cell, the
 !    message naming the argument), an unknown name, closures of the wrong family, bad options.
@@ -85,6 +89,18 @@ program kinetic_theory_moments
       type(c_ptr), value :: growth_rate, diffusion_intensity, condition, error
       real(c_double), intent(out) :: weight_sources(*), weighted_node_sources(*)
       integer(c_int), intent(out) :: status(*)
+    end function
+    integer(c_int) function c_unequal_temperature_mixture(radial, n, classes, fractions, temperatures, diameters, &
+                                                          densities, restitution, p1, p2, p3, p4, p5, p6, p7, p8, p9, &
+                                                          p10, p11, p12, p13, p14, p15, p16, p17, p18, p19, p20, p21, &
+                                                          p22, p23, p24, error) &
+        bind(C, name='fluidbed_unequal_temperature_mixture_with_derivatives')
+      import :: c_int, c_size_t, c_double, c_ptr
+      type(c_ptr), value :: radial, error
+      integer(c_size_t), value :: n, classes
+      real(c_double), intent(in) :: fractions(*), temperatures(*), diameters(*), densities(*), restitution(*)
+      type(c_ptr), value :: p1, p2, p3, p4, p5, p6, p7, p8, p9, p10, p11, p12, p13, p14, p15, p16, p17, p18, p19, &
+                            p20, p21, p22, p23, p24
     end function
   end interface
   integer, parameter :: field = 40, key_length = 8 * (field + 1)
@@ -148,6 +164,7 @@ program kinetic_theory_moments
   call check_moment_table(trim(directory) // '/moments_reference.csv')
   call check_moments()
   call check_dqmom()
+  call check_unequal_temperature_mixture()
   call check_metadata()
   call check_bad_input()
   print '(a, 5(i0, a))', 'fortran: ', radial_rows, ' radial distribution rows, ', law_rows, &
@@ -966,6 +983,77 @@ contains
     code = fluidbed_dqmom_growth_diffusion_sources(7, xi, phi, a, b, status, growth_rate=g, message=message)
     call check(code == FLUIDBED_INVALID_ARGUMENT .and. message == 'fluidbed: unknown fluidbed_dqmom_weights 7', &
                'dqmom growth: weights kind 7: ' // message)
+  end subroutine
+
+  ! The kinetic theory of classes with their own granular temperatures (see the header comment).
+  subroutine check_unequal_temperature_mixture()
+    integer, parameter :: n = 4, nc = 3
+    type(fluidbed_closure) :: radial
+    real(c_double) :: alpha(n, nc), theta(n, nc), d(n, nc), rho(n, nc), e(n), mass(nc)
+    real(c_double) :: p(n, nc), gamma(n, nc), mu(n, nc, nc), lambda(n, nc, nc), beta(n, nc, nc), s(n, nc, nc), &
+                      h(n, nc, nc), dp_da(n, nc, nc), dmu_dt(n, nc, nc, nc), one_p(n, 1), one_h(n, 1, 1), bad(n, 2)
+    real(c_double), target :: cp(n, nc), cdp_da(n, nc, nc), cmu(n, nc, nc), cdmu_dt(n, nc, nc, nc)
+    character(len=:), allocatable :: message
+    integer :: code, c, i, k, cell
+    code = fluidbed_create('ModifiedMansoori', radial, message)
+    call check(code == FLUIDBED_OK, 'unequal temperatures: ' // message)
+    do i = 1, nc
+      alpha(:, i) = [0.05_c_double, 0.1_c_double, 0.15_c_double, 0.16_c_double] * (1 + 0.2_c_double * (i - 1))
+      theta(:, i) = [1e-3_c_double, 4e-3_c_double, 2e-2_c_double, 5e-4_c_double] * i
+      d(:, i) = 1e-4_c_double * (1 + 0.7_c_double * (i - 1))
+      rho(:, i) = 2500 - 400 * (i - 1)
+    end do
+    e = [0.9_c_double, 0.7_c_double, 1.0_c_double, 0.95_c_double]
+    code = fluidbed_unequal_temperature_mixture(radial, alpha, theta, d, rho, e, pressure=p, shear_viscosity=mu, &
+                                                bulk_viscosity=lambda, dissipation=gamma, drag=beta, segregation=s, &
+                                                radial_distribution=h, d_pressure_d_fractions=dp_da, &
+                                                d_shear_viscosity_d_temperatures=dmu_dt, message=message)
+    call check(code == FLUIDBED_OK, 'unequal temperatures: ' // message)
+    code = c_unequal_temperature_mixture(radial%handle, int(n, c_size_t), int(nc, c_size_t), alpha, theta, d, rho, e, &
+                                         c_loc(cp), c_loc(cdp_da), c_null_ptr, c_loc(cmu), c_null_ptr, c_loc(cdmu_dt), &
+                                         c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
+                                         c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
+                                         c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, &
+                                         c_null_ptr)
+    call check(code == FLUIDBED_OK .and. all(same_bits(p, cp)) .and. all(same_bits(dp_da, cdp_da)) .and. &
+               all(same_bits(mu, cmu)) .and. all(same_bits(dmu_dt, cdmu_dt)), &
+               'unequal temperatures: the wrapper returns the C function''s bits')
+    ! μ_ik = (√(2π)/15) c_ik M_i σ⁴ Σ^(3/2)/Θ_k for k ≠ i, so μ_12/μ_21 = M_1Θ_1/(M_2Θ_2): element (c, k, i) is μ_ik.
+    mass = rho(1, :) * d(1, :)**3
+    do c = 1, n
+      call check(relative_difference(mu(c, 2, 1) / mu(c, 1, 2), mass(1) * theta(c, 1) / (mass(2) * theta(c, 2))) < &
+                 1e-13_c_double, 'unequal temperatures: mu_12/mu_21 = m_1 Theta_1/(m_2 Theta_2)')
+      do i = 1, nc
+        call check(abs(beta(c, i, i)) <= 0 .and. abs(s(c, i, i)) <= 0, &
+                   'unequal temperatures: no drag of a class on itself')
+        do k = 1, nc
+          call check(same_bits(beta(c, k, i), beta(c, i, k)) .and. same_bits(s(c, k, i), s(c, i, k)) .and. &
+                     same_bits(h(c, k, i), h(c, i, k)), 'unequal temperatures: beta, s and h symmetric')
+          call check(relative_difference(lambda(c, k, i), 5 * mu(c, k, i) / 3) < 1e-15_c_double, &
+                     'unequal temperatures: lambda = (5/3) mu')
+        end do
+      end do
+    end do
+    call check(abs(sum(gamma(3, :))) < 1e-13_c_double * sum(abs(gamma(3, :))), &
+               'unequal temperatures: the classes only exchange energy at e = 1')
+    ! One class: Lun's pressure αρΘ(1 + 2(1 + e)α h).
+    code = fluidbed_unequal_temperature_mixture(radial, alpha(:, 1:1), theta(:, 1:1), d(:, 1:1), rho(:, 1:1), e, &
+                                                pressure=one_p, radial_distribution=one_h, message=message)
+    call check(code == FLUIDBED_OK .and. all(relative_difference(one_p(:, 1), alpha(:, 1) * rho(:, 1) * theta(:, 1) * &
+                                             (1 + 2 * (1 + e) * alpha(:, 1) * one_h(:, 1, 1))) < 1e-14_c_double), &
+               'unequal temperatures: one class gives Lun''s pressure')
+    ! A cold class in cell 2, shapes that disagree, a closure of another family.
+    theta(2, 3) = 0
+    code = fluidbed_unequal_temperature_mixture(radial, alpha, theta, d, rho, e, pressure=p, message=message, cell=cell)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. cell == 2 .and. index(message, 'state.temperatures[2]') > 0, &
+               'unequal temperatures: a cold class: ' // message)
+    code = fluidbed_unequal_temperature_mixture(radial, alpha, theta, d, rho, e, pressure=bad, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'unequal temperatures: a pressure of 2 classes for 3')
+    call fluidbed_destroy(radial)
+    code = fluidbed_create('CarnahanStarling', radial)
+    code = fluidbed_unequal_temperature_mixture(radial, alpha, theta, d, rho, e, pressure=p, message=message)
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'unequal temperatures: CarnahanStarling is not a mixture one')
+    call fluidbed_destroy(radial)
   end subroutine
 
   subroutine check_moments()

@@ -310,6 +310,57 @@ FLUIDBED_C_API fluidbed_status fluidbed_gas_exchange_source(
     double* d_solid_fraction, double* d_granular_temperature, double* d_beta, double* d_slip,
     fluidbed_error* error);
 
+/* ---- Kinetic theory of classes with their own granular temperatures -------------------------- */
+
+/* The kinetic theory of Lathouwers & Bellan (2001) (docs/closures/kinetic_theory.md; the C++
+ * kinetic_theory::UnequalTemperatureMixture) over n cells of class_count classes (1 to
+ * FLUIDBED_MAX_CLASSES), with h_ik the mixture radial distribution `radial` (a
+ * FLUIDBED_MIXTURE_RADIAL_DISTRIBUTION closure with its parameters: "Lebowitz", "Mansoori" or
+ * "ModifiedMansoori", the latter seed 004's, max_packing 0.64 as registered). Class m of cell c has
+ * the envelope volume fraction fractions[m n + c] = α_m >= 0 (Σ α_m < 1), the granular temperature
+ * temperatures[m n + c] = Θ_m = <C_m^2>/3 > 0 [m^2 s^-2], the diameter diameters[m n + c] > 0 [m]
+ * and the envelope density densities[m n + c] > 0 [kg m^-3]; every pair of cell c has the
+ * restitution restitution[c] ∈ [0, 1]. Writes, per unit volume of suspension (N = class_count):
+ *   pressure[i n + c]                     p_i [Pa]
+ *   shear_viscosity[(i N + k) n + c]      μ_ik [Pa s]: class k's strain rate in class i's stress
+ *   bulk_viscosity[(i N + k) n + c]       λ_ik = (5/3) μ_ik [Pa s]
+ *   conductivity[(i N + k) n + c]         κ_ik [kg m^-1 s^-1]: q_i = −Σ_k κ_ik ∇Θ_k
+ *   dissipation[i n + c]                  γ_i [W m^-3], a sink (inelastic loss and transfer to
+ *                                         the other classes)
+ *   drag[(i N + k) n + c]                 β_ik [kg m^-3 s^-1], symmetric, β_ii = 0 (force on class i
+ *                                         Σ_k β_ik (u_k − u_i))
+ *   segregation[(i N + k) n + c]          s_ik [Pa], symmetric, s_ii = 0 (force on class i
+ *                                         Σ_k s_ik ∇ln(n_i/n_k))
+ *   radial_distribution[(i N + k) n + c]  h_ik
+ * the matrices row-major per cell. Any output may be NULL (not wanted). Every cell is validated as
+ * mixture.checked does (FLUIDBED_DOMAIN_ERROR naming the argument, e.g. 'state.temperatures[1]',
+ * and the failing cell); a class count out of range, a NULL input or a closure of another family
+ * is FLUIDBED_INVALID_ARGUMENT. The values of mixture.checked, bit for bit. */
+FLUIDBED_C_API fluidbed_status fluidbed_unequal_temperature_mixture(
+    const fluidbed_closure* radial, size_t n, size_t class_count, const double* fractions,
+    const double* temperatures, const double* diameters, const double* densities, const double* restitution,
+    double* pressure, double* shear_viscosity, double* bulk_viscosity, double* conductivity, double* dissipation,
+    double* drag, double* segregation, double* radial_distribution, fluidbed_error* error);
+
+/* The same with the derivatives: each output X (laid out as above, S = its size: N n for p and γ,
+ * N^2 n for the matrices) is followed by d_X_d_fractions and d_X_d_temperatures, of size N S, which
+ * hold ∂X/∂α_m and ∂X/∂Θ_m laid out as X, m after m: ∂X[e n + c]/∂α_m at
+ * d_X_d_fractions[m S + e n + c] (e = i, or i N + k). Every pointer may be NULL (not wanted); the
+ * derivatives are those of mixture.checked_with_derivatives, bit for bit (∂/∂α_m through h_ik as
+ * well). */
+FLUIDBED_C_API fluidbed_status fluidbed_unequal_temperature_mixture_with_derivatives(
+    const fluidbed_closure* radial, size_t n, size_t class_count, const double* fractions,
+    const double* temperatures, const double* diameters, const double* densities, const double* restitution,
+    double* pressure, double* d_pressure_d_fractions, double* d_pressure_d_temperatures, double* shear_viscosity,
+    double* d_shear_viscosity_d_fractions, double* d_shear_viscosity_d_temperatures, double* bulk_viscosity,
+    double* d_bulk_viscosity_d_fractions, double* d_bulk_viscosity_d_temperatures, double* conductivity,
+    double* d_conductivity_d_fractions, double* d_conductivity_d_temperatures, double* dissipation,
+    double* d_dissipation_d_fractions, double* d_dissipation_d_temperatures, double* drag,
+    double* d_drag_d_fractions, double* d_drag_d_temperatures, double* segregation,
+    double* d_segregation_d_fractions, double* d_segregation_d_temperatures, double* radial_distribution,
+    double* d_radial_distribution_d_fractions, double* d_radial_distribution_d_temperatures,
+    fluidbed_error* error);
+
 /* ---- Moment inversion ------------------------------------------------------------------------- */
 
 /* The support of the distributions: [0, ∞) (sizes, masses) or the real line (velocities). */

@@ -307,3 +307,47 @@ extern "C" fluidbed_status fluidbed_elastic_modulus_at_state(const fluidbed_clos
                                                  fluid_density, fluid_viscosity, diameter, modulus, d_voidage, d_slip);
   });
 }
+
+extern "C" fluidbed_status fluidbed_unequal_temperature_mixture(
+    const fluidbed_closure* radial, size_t n, size_t class_count, const double* fractions,
+    const double* temperatures, const double* diameters, const double* densities, const double* restitution,
+    double* pressure, double* shear_viscosity, double* bulk_viscosity, double* conductivity, double* dissipation,
+    double* drag, double* segregation, double* radial_distribution, fluidbed_error* error) {
+  return fluidbed_unequal_temperature_mixture_with_derivatives(
+      radial, n, class_count, fractions, temperatures, diameters, densities, restitution, pressure, nullptr, nullptr,
+      shear_viscosity, nullptr, nullptr, bulk_viscosity, nullptr, nullptr, conductivity, nullptr, nullptr, dissipation,
+      nullptr, nullptr, drag, nullptr, nullptr, segregation, nullptr, nullptr, radial_distribution, nullptr, nullptr,
+      error);
+}
+
+extern "C" fluidbed_status fluidbed_unequal_temperature_mixture_with_derivatives(
+    const fluidbed_closure* radial, size_t n, size_t class_count, const double* fractions,
+    const double* temperatures, const double* diameters, const double* densities, const double* restitution,
+    double* pressure, double* d_pressure_d_fractions, double* d_pressure_d_temperatures, double* shear_viscosity,
+    double* d_shear_viscosity_d_fractions, double* d_shear_viscosity_d_temperatures, double* bulk_viscosity,
+    double* d_bulk_viscosity_d_fractions, double* d_bulk_viscosity_d_temperatures, double* conductivity,
+    double* d_conductivity_d_fractions, double* d_conductivity_d_temperatures, double* dissipation,
+    double* d_dissipation_d_fractions, double* d_dissipation_d_temperatures, double* drag,
+    double* d_drag_d_fractions, double* d_drag_d_temperatures, double* segregation,
+    double* d_segregation_d_fractions, double* d_segregation_d_temperatures, double* radial_distribution,
+    double* d_radial_distribution_d_fractions, double* d_radial_distribution_d_temperatures,
+    fluidbed_error* error) {
+  using fluidbed::bindings::ClassOutputs;
+  return guarded(error, [&] {
+    ClassOutputs<double> out{};
+    out[fluidbed::bindings::class_pressure] = {pressure, d_pressure_d_fractions, d_pressure_d_temperatures};
+    out[fluidbed::bindings::class_shear_viscosity] = {shear_viscosity, d_shear_viscosity_d_fractions,
+                                                      d_shear_viscosity_d_temperatures};
+    out[fluidbed::bindings::class_bulk_viscosity] = {bulk_viscosity, d_bulk_viscosity_d_fractions,
+                                                     d_bulk_viscosity_d_temperatures};
+    out[fluidbed::bindings::class_conductivity] = {conductivity, d_conductivity_d_fractions,
+                                                   d_conductivity_d_temperatures};
+    out[fluidbed::bindings::class_dissipation] = {dissipation, d_dissipation_d_fractions, d_dissipation_d_temperatures};
+    out[fluidbed::bindings::class_drag] = {drag, d_drag_d_fractions, d_drag_d_temperatures};
+    out[fluidbed::bindings::class_segregation] = {segregation, d_segregation_d_fractions, d_segregation_d_temperatures};
+    out[fluidbed::bindings::class_radial_distribution] = {radial_distribution, d_radial_distribution_d_fractions,
+                                                          d_radial_distribution_d_temperatures};
+    fluidbed::bindings::unequal_temperature_mixture(closure_of(radial, "unequal_temperature_mixture"), n, class_count,
+                                                    fractions, temperatures, diameters, densities, restitution, out);
+  });
+}

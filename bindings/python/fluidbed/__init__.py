@@ -31,7 +31,8 @@ __all__ = ["Error", "DomainError", "UnknownName", "UnknownParameter", "InvalidAr
            "FrictionalStress", "MixtureRadialDistribution", "GasExchangeSource", "SolidSolidDrag", "WallBoundaryCondition",
            "CONVENTIONS",
            "invert", "INVERSION_STATUSES", "realizability", "correct", "CORRECTION_STATUSES", "dqmom_sources",
-           "dqmom_growth_diffusion_sources", "DQMOM_STATUSES"]
+           "dqmom_growth_diffusion_sources", "DQMOM_STATUSES", "unequal_temperature_mixture", "ClassKinetics",
+           "ClassSensitivity"]
 
 
 class Error(ValueError):
@@ -382,6 +383,49 @@ class GasExchangeSource(Closure):
         r = _call(_module(dtype).gas_exchange_source, shape, self._closure, rdf, *flat, bool(derivatives))
         r = [None if a is None else a.reshape(shape) for a in r]
         return Source(*r) if derivatives else r[0]
+
+
+ClassKinetics = namedtuple("ClassKinetics", "pressure shear_viscosity bulk_viscosity conductivity dissipation drag "
+                                           "segregation radial_distribution")
+ClassSensitivity = namedtuple("ClassSensitivity", "value d_fractions d_temperatures")
+
+
+def unequal_temperature_mixture(fractions, temperatures, diameters, densities, restitution, *,
+                                radial="ModifiedMansoori", derivatives=False):
+    """The kinetic theory of classes with their own granular temperatures (Lathouwers & Bellan 2001;
+    the C++ kinetic_theory::UnequalTemperatureMixture, checked), per unit volume of suspension.
+    Each class's envelope volume fraction α_m, granular temperature Θ_m [m² s⁻²], diameter [m] and
+    envelope density [kg/m³] lie along the last axis of their arrays (..., classes; 1 to 10 classes,
+    broadcast against each other); ``restitution`` (...) is that of every pair of the cell; ``radial``
+    is the mixture radial distribution h_ik (a MixtureRadialDistribution or its name: "Lebowitz",
+    "Mansoori", "ModifiedMansoori", the latter seed 004's with max_packing 0.64).
+
+    Returns a ``ClassKinetics`` of p_i [Pa] and γ_i [W m⁻³] (a sink, transfer included) as (...,
+    classes), and the matrices μ_ik, λ_ik [Pa s], κ_ik [kg m⁻¹ s⁻¹], β_ik [kg m⁻³ s⁻¹], s_ik [Pa]
+    and h_ik as (..., classes, classes), entry [..., i, k] (μ_ik: class k's strain rate in class
+    i's stress; q_i = −Σ_k κ_ik ∇Θ_k). With ``derivatives`` every field is a ``ClassSensitivity``
+    of the value and its ∂/∂α_m and ∂/∂Θ_m, the value's shape with m along one more last axis.
+    The C interface's fluidbed_unequal_temperature_mixture_with_derivatives, bit for bit."""
+    rdf = radial if isinstance(radial, MixtureRadialDistribution) else MixtureRadialDistribution(radial)
+    dtype, shape, flat = _prepare([fractions, temperatures, diameters, densities, np.asarray(restitution)[..., None]])
+    if len(shape) == 0 or shape[-1] == 0:
+        raise InvalidArgument("fluidbed: unequal_temperature_mixture: the classes must lie along the last axis")
+    cells, classes = shape[:-1], shape[-1]
+    fields = [np.ascontiguousarray(a.reshape(-1, classes).T) for a in flat[:4]]
+    e = np.ascontiguousarray(flat[4].reshape(-1, classes)[:, 0])
+    values, by_fraction, by_temperature = _call(_module(dtype).unequal_temperature_mixture, cells, rdf._closure,
+                                                *fields, e, bool(derivatives))
+
+    def cells_first(a, derivative=False):
+        a = np.moveaxis(a, -1, 0)  # (cells, [m,] i[, k])
+        if derivative:
+            a = np.moveaxis(a, 1, -1)  # m last
+        return a.reshape(cells + a.shape[1:])
+
+    if not derivatives:
+        return ClassKinetics(*(cells_first(v) for v in values))
+    return ClassKinetics(*(ClassSensitivity(cells_first(v), cells_first(a, True), cells_first(t, True))
+                           for v, a, t in zip(values, by_fraction, by_temperature)))
 
 
 #: A cell's outcome of ``correct`` (the C++ library's moments::CorrectionStatus).

@@ -295,6 +295,47 @@ py::tuple gas_exchange_source(const fb::NamedClosure& law, const fb::NamedClosur
   return py::make_tuple(value, d_phi, d_theta, d_beta, d_slip);
 }
 
+// The unequal-temperature mixture of cells whose classes are the rows of (classes, cells) arrays,
+// restitution (cells,): a tuple of the quantities in fb::ClassQuantity's order, (classes, cells)
+// for p and γ and (classes, classes, cells) for the matrices, and, with derivatives, tuples of
+// their ∂/∂α_m and ∂/∂Θ_m, each (classes_m, ...) the quantity's shape m after m; else None.
+template <class T>
+py::tuple unequal_temperature_mixture(const fb::NamedClosure& radial, const Array<T>& fractions,
+                                      const Array<T>& temperatures, const Array<T>& diameters,
+                                      const Array<T>& densities, const Array<T>& restitution, bool derivatives) {
+  for (const auto* field : {&temperatures, &diameters, &densities})
+    if (fractions.ndim() != 2 || field->ndim() != 2 || field->shape(0) != fractions.shape(0) ||
+        field->shape(1) != fractions.shape(1))
+      guarded([] { throw fb::InvalidArgument("fluidbed: the class fields must be (classes, cells) alike"); });
+  const py::ssize_t classes = fractions.shape(0), n = fractions.shape(1);
+  if (restitution.ndim() != 1 || restitution.shape(0) != n)
+    guarded([] { throw fb::InvalidArgument("fluidbed: the restitution must be (cells,)"); });
+  py::list values, d_fractions, d_temperatures;
+  fb::ClassOutputs<T> out{};
+  for (std::size_t q = 0; q < fb::class_quantity_count; ++q) {
+    const bool per_class = q == fb::class_pressure || q == fb::class_dissipation;
+    std::vector<py::ssize_t> shape = per_class ? std::vector<py::ssize_t>{classes, n}
+                                               : std::vector<py::ssize_t>{classes, classes, n};
+    Array<T> value(shape);
+    out[q].value = value.mutable_data();
+    values.append(value);
+    if (!derivatives) continue;
+    shape.insert(shape.begin(), classes);
+    Array<T> by_fraction(shape), by_temperature(shape);
+    out[q].d_fractions = by_fraction.mutable_data();
+    out[q].d_temperatures = by_temperature.mutable_data();
+    d_fractions.append(by_fraction);
+    d_temperatures.append(by_temperature);
+  }
+  guarded([&] {
+    fb::unequal_temperature_mixture<T>(radial, static_cast<std::size_t>(n), static_cast<std::size_t>(classes),
+                                       fractions.data(), temperatures.data(), diameters.data(), densities.data(),
+                                       restitution.data(), out);
+  });
+  if (!derivatives) return py::make_tuple(py::tuple(values), py::none(), py::none());
+  return py::make_tuple(py::tuple(values), py::tuple(d_fractions), py::tuple(d_temperatures));
+}
+
 template <class T>
 void define_kernels(py::module_& m) {
   m.def("moment_realizability", &moment_realizability<T>);
@@ -304,6 +345,7 @@ void define_kernels(py::module_& m) {
         py::arg("nodes"), py::arg("weights"), py::arg("growth").none(true), py::arg("intensity").none(true));
   m.def("mixture_radial_distribution", &mixture_radial_distribution<T>);
   m.def("solid_solid_drag", &solid_solid_drag<T>);
+  m.def("unequal_temperature_mixture", &unequal_temperature_mixture<T>);
   m.def("gas_exchange_source", &gas_exchange_source<T>, py::arg("law"), py::arg("radial").none(true),
         py::arg("phi"), py::arg("theta"), py::arg("slip"), py::arg("beta").none(true),
         py::arg("gas_viscosity").none(true), py::arg("diameter"), py::arg("density"), py::arg("restitution"),

@@ -589,3 +589,59 @@ def test_dqmom_sources_bit_for_bit_with_c_growth_identity_shapes_and_errors():
         fluidbed.dqmom_growth_diffusion_sources([1e-4, 2e-4], [0.1, 0.2], weights_kind="mass")
     with pytest.raises(fluidbed.InvalidArgument):
         fluidbed.dqmom_sources(np.full(9, 1e-4), np.ones(9), np.ones(18))
+
+
+def test_unequal_temperature_mixture_bit_for_bit_with_c_identities_shapes_and_errors():
+    rng = np.random.default_rng(29)
+    cells = 6
+    for count in range(1, 5):
+        fractions = (0.05 + 0.4 * rng.random((cells, 1))) / count * (1 + 0.2 * np.arange(count))
+        temperatures = 1e-3 * (1 + 4 * rng.random((cells, count)))
+        diameters = 1e-4 * (1 + 0.7 * np.arange(count)) * np.ones((cells, 1))
+        densities = (2500 - 400 * np.arange(count)) * np.ones((cells, 1))
+        restitution = 0.7 + 0.3 * rng.random(cells)
+        fields = [np.ascontiguousarray(a.T) for a in (fractions, temperatures, diameters, densities)]
+        for name in ("Lebowitz", "Mansoori", "ModifiedMansoori"):
+            python = fluidbed.unequal_temperature_mixture(fractions, temperatures, diameters, densities, restitution,
+                                                          radial=name, derivatives=True)
+            plain = fluidbed.unequal_temperature_mixture(fractions, temperatures, diameters, densities, restitution,
+                                                         radial=fluidbed.MixtureRadialDistribution(name))
+            # The C interface on the same (classes, cells) fields: entry e of cell c at [e n + c], the
+            # derivative in class m at [m S + e n + c].
+            entries = [(count,) if q in (0, 4) else (count, count) for q in range(8)]
+            out = [[np.empty(e + (cells,)), np.empty((count,) + e + (cells,)), np.empty((count,) + e + (cells,))]
+                   for e in entries]
+            assert C.fluidbed_unequal_temperature_mixture_with_derivatives(
+                c_closure(name), ctypes.c_size_t(cells), ctypes.c_size_t(count), *(ptr(a) for a in fields),
+                ptr(restitution), *(ptr(a) for trio in out for a in trio), None) == 0
+            for field, unchecked, (value, by_fraction, by_temperature) in zip(python, plain, out):
+                assert same_bits(field.value, np.moveaxis(value, -1, 0))
+                assert same_bits(unchecked, field.value)
+                assert same_bits(field.d_fractions, np.moveaxis(np.moveaxis(by_fraction, -1, 0), 1, -1))
+                assert same_bits(field.d_temperatures, np.moveaxis(np.moveaxis(by_temperature, -1, 0), 1, -1))
+            # Independent identities: entry [..., i, k] is μ_ik, and μ_12/μ_21 = m_1Θ_1/(m_2Θ_2); one class
+            # gives Lun's pressure αρΘ(1 + 2(1 + e)α h).
+            mu, h = plain.shear_viscosity, plain.radial_distribution
+            if count > 1:
+                mass = densities * diameters ** 3
+                assert np.allclose(mu[:, 0, 1] / mu[:, 1, 0], mass[:, 0] * temperatures[:, 0] /
+                                   (mass[:, 1] * temperatures[:, 1]), rtol=1e-13, atol=0)
+            else:
+                lun = fractions[:, 0] * densities[:, 0] * temperatures[:, 0] * (
+                    1 + 2 * (1 + restitution) * fractions[:, 0] * h[:, 0, 0])
+                assert np.allclose(plain.pressure[:, 0], lun, rtol=1e-14, atol=0)
+            assert np.array_equal(plain.drag, np.swapaxes(plain.drag, -1, -2))
+    # Broadcasting (one cell, scalars for the classes' common values), float32, errors.
+    one = fluidbed.unequal_temperature_mixture([0.2, 0.1], [1e-3, 2e-3], 1e-4, 2500, 0.9)
+    assert one.pressure.shape == (2,) and one.drag.shape == (2, 2)
+    single = fluidbed.unequal_temperature_mixture(np.float32([0.2, 0.1]), np.float32([1e-3, 2e-3]), np.float32(1e-4),
+                                                  np.float32(2500), np.float32(0.9), derivatives=True)
+    assert single.pressure.value.dtype == np.float32 and single.pressure.d_fractions.shape == (2, 2)
+    assert np.allclose(single.pressure.value, one.pressure, rtol=1e-5)
+    with pytest.raises(fluidbed.DomainError) as cold:
+        fluidbed.unequal_temperature_mixture([[0.2, 0.1], [0.2, 0.1]], [[1e-3, 2e-3], [1e-3, 0.0]], 1e-4, 2500, 0.9)
+    assert cold.value.index == (1,) and "state.temperatures[1]" in str(cold.value)
+    with pytest.raises(fluidbed.InvalidArgument):
+        fluidbed.unequal_temperature_mixture(np.full(11, 0.01), 1e-3, 1e-4, 2500, 0.9)
+    with pytest.raises(fluidbed.InvalidArgument):
+        fluidbed.unequal_temperature_mixture([0.2, 0.1], 1e-3, 1e-4, 2500, 0.9, radial="CarnahanStarling")
