@@ -265,15 +265,15 @@ TEST_CASE("GidaspowLeboreiro: exactly Ergun and Wen-Yu outside its window, C1 th
   const auto beta = [&](double e, double w) { return law.with_derivatives(state(e, w)).pressure_gradient(); };
   for (double w : {0.0, 0.05, 0.5, 5.0}) {
     INFO("w=" << w);
-    for (double e : {0.4, 0.5, 0.519}) {  // below ε_s − δ: Ergun, value and slopes
-      CHECK(beta(e, w).value == ergun(e, w).value);
-      CHECK(beta(e, w).d_voidage == ergun(e, w).d_voidage);
-      CHECK(beta(e, w).d_slip == ergun(e, w).d_slip);
-    }
-    for (double e : {0.5600001, 0.7, 0.8, 0.95}) {  // above ε_s + δ: Wen–Yu (Gidaspow's, 2.65)
-      CHECK(beta(e, w).value == wen_yu(e, w).value);
-      CHECK(beta(e, w).d_voidage == wen_yu(e, w).d_voidage);
-    }
+    // Outside the window the law is one of the two, to rounding (a few ulp: FMA contraction at
+    // -march=native, and Wen–Yu's pressure-gradient slope formed from the classical one here).
+    const auto same = [](const DragDerivatives<double>& a, const DragDerivatives<double>& b) {
+      CHECK(a.value == doctest::Approx(b.value).epsilon(1e-14));
+      CHECK(a.d_voidage == doctest::Approx(b.d_voidage).epsilon(1e-14));
+      CHECK((a.d_slip == b.d_slip || a.d_slip == doctest::Approx(b.d_slip).epsilon(1e-14)));  // +∞ at w = 0
+    };
+    for (double e : {0.4, 0.5, 0.519}) same(beta(e, w), ergun(e, w));  // below ε_s − δ: Ergun
+    for (double e : {0.5600001, 0.7, 0.8, 0.95}) same(beta(e, w), wen_yu(e, w));  // above: Wen–Yu (Gidaspow's)
     // At ε_s the Hermite weight is ½: the mean of the two laws.
     CHECK(beta(0.54, w).value == doctest::Approx(0.5 * (ergun(0.54, w).value + wen_yu(0.54, w).value)).epsilon(1e-14));
     // Inside, with t = (ε − 0.52)/0.04, s = 3t² − 2t³, s' = 6t(1 − t)/0.04:
