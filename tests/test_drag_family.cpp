@@ -256,6 +256,61 @@ TEST_CASE("Gidaspow: documented jump at ε = 0.8, blend continuous and centred t
   CHECK(GidaspowBlended::blending_weight(0.75) == doctest::Approx(0.0242).epsilon(1e-2));
 }
 
+TEST_CASE("GidaspowLeboreiro: exactly Ergun and Wen-Yu outside its window, C1 through it") {
+  const GidaspowLeboreiro law;  // ε_s = 0.54 (Leboreiro et al.'s φ_s = 0.46), δ = 0.02
+  const auto ergun = [](double e, double w) { return Ergun{}.with_derivatives(state(e, w)).pressure_gradient(); };
+  const auto wen_yu = [](double e, double w) {
+    return ConstantExponentDrag::wen_yu_gidaspow().with_derivatives(state(e, w)).pressure_gradient();
+  };
+  const auto beta = [&](double e, double w) { return law.with_derivatives(state(e, w)).pressure_gradient(); };
+  for (double w : {0.0, 0.05, 0.5, 5.0}) {
+    INFO("w=" << w);
+    // Outside the window the law is one of the two, to rounding (a few ulp: FMA contraction at
+    // -march=native, and Wen–Yu's pressure-gradient slope formed from the classical one here).
+    const auto same = [](const DragDerivatives<double>& a, const DragDerivatives<double>& b) {
+      CHECK(a.value == doctest::Approx(b.value).epsilon(1e-14));
+      CHECK(a.d_voidage == doctest::Approx(b.d_voidage).epsilon(1e-14));
+      CHECK((a.d_slip == b.d_slip || a.d_slip == doctest::Approx(b.d_slip).epsilon(1e-14)));  // +∞ at w = 0
+    };
+    for (double e : {0.4, 0.5, 0.519}) same(beta(e, w), ergun(e, w));  // below ε_s − δ: Ergun
+    for (double e : {0.5600001, 0.7, 0.8, 0.95}) same(beta(e, w), wen_yu(e, w));  // above: Wen–Yu (Gidaspow's)
+    // At ε_s the Hermite weight is ½: the mean of the two laws.
+    CHECK(beta(0.54, w).value == doctest::Approx(0.5 * (ergun(0.54, w).value + wen_yu(0.54, w).value)).epsilon(1e-14));
+    // Inside, with t = (ε − 0.52)/0.04, s = 3t² − 2t³, s' = 6t(1 − t)/0.04:
+    // ∂β/∂ε = (1 − s) E' + s Y' + s' (Y − E).
+    for (double e : {0.525, 0.54, 0.555}) {
+      const double t = (e - 0.52) / 0.04, s = t * t * (3 - 2 * t), slope = 6 * t * (1 - t) / 0.04;
+      const auto E = ergun(e, w), Y = wen_yu(e, w);
+      CHECK(beta(e, w).value == doctest::Approx((1 - s) * E.value + s * Y.value).epsilon(1e-13));
+      CHECK(beta(e, w).d_voidage ==
+            doctest::Approx((1 - s) * E.d_voidage + s * Y.d_voidage + slope * (Y.value - E.value)).epsilon(1e-12));
+    }
+    // Continuity of β and ∂β/∂ε at both window edges (s' vanishes there).
+    for (double edge : {0.52, 0.56}) {
+      const auto left = beta(edge - 1e-9, w), right = beta(edge + 1e-9, w);
+      CHECK(right.value == doctest::Approx(left.value).epsilon(1e-7));
+      CHECK(right.d_voidage == doctest::Approx(left.d_voidage).epsilon(1e-6));
+    }
+  }
+  // The jump it removes: at φ = 0.46 and w = 0, Ergun/Wen-Yu = 150 φ ε^1.65/18 = 1.387 (both pressure-gradient).
+  const double ratio_at_switch = ergun(0.54, 0.0).value / wen_yu(0.54, 0.0).value;
+  CHECK(ratio_at_switch == doctest::Approx(150 * 0.46 * std::pow(0.54, 1.65) / 18).epsilon(1e-13));
+  CHECK(ratio_at_switch == doctest::Approx(1.3868).epsilon(1e-4));
+  // Switch voidage and width are the caller's: at 0.8 with a narrow window it is GidaspowSwitched
+  // outside 0.8 ± 1e-4.
+  const GidaspowLeboreiro at_gidaspow{0.8, 1e-4};
+  for (double w : {0.0, 0.5})
+    for (double e : {0.79, 0.7999, 0.8001, 0.81})
+      CHECK(at_gidaspow(state(e, w)).classical() == GidaspowSwitched{}(state(e, w)).classical());
+  CHECK(get_parameter(law, "switch_voidage") == 0.54);
+  CHECK(get_parameter(law, "half_width") == 0.02);
+  // The checked entry points name a parameter out of its domain.
+  CHECK_THROWS_WITH_AS(GidaspowLeboreiro(0.54, 0.0).checked(state(0.5, 0.1)), doctest::Contains("'half_width' = 0"),
+                       std::domain_error);
+  CHECK_THROWS_WITH_AS(GidaspowLeboreiro(1.0, 0.02).checked(state(0.5, 0.1)),
+                       doctest::Contains("'switch_voidage' = 1"), std::domain_error);
+}
+
 TEST_CASE("Di Felice: χ minimum 3.05 (α_d = 2.05) exactly at Re = 10^1.5, 3.7 at both limits") {
   using Law = DiFelice<>;
   const double re_min = std::pow(10.0, 1.5);

@@ -297,4 +297,27 @@ TEST_CASE_TEMPLATE("out of domain: bed expansion, voidage ratio, equivalent expo
        {"initial_voidage", 0.4, outside_open_unit},
        {"voidage", 0.5, outside_open_unit}},
       [](const ValuesOf<T>& v) { return fluidization::bed_height(v[0], v[1], v[2], fluidbed::checked); });
+  const std::vector<ArgumentCase> step = {
+      {"initial_height", 0.25, not_positive},
+      {"initial_velocity", 0.125, negative, {0.0}},
+      {"final_height", 0.5, and_non_finite({{0.25, "0.25"}, {0.125, "0.125"}})},
+      {"final_velocity", 0.5, and_non_finite({{0.125, "0.125"}, {-1.0, "-1"}})}};
+  const auto step_of = [](const ValuesOf<T>& v) { return fluidization::ExpansionStep<T>{v[0], v[1], v[2], v[3]}; };
+  check_entry_point<T>("expansion_time_constant", step, [&](const ValuesOf<T>& v) {
+    return fluidization::expansion_time_constant(step_of(v), fluidbed::checked);
+  });
+  check_entry_point<T>("expansion_response_time", step, [&](const ValuesOf<T>& v) {
+    return fluidization::expansion_response_time(step_of(v), fluidbed::checked);
+  });
+  check_entry_point<T>("expanding_bed_height", concatenated(step, {{"time", 10.0, negative, {0.0}}}),
+                       [&](const ValuesOf<T>& v) {
+                         return fluidization::expanding_bed_height(step_of(v), v[4], fluidbed::checked);
+                       });
+  check_entry_point<T>("geldart_group",
+                       {{"particle_density", 2500.0, and_non_finite({{1.25, "1.25"}, {1.0, "1"}, {-1.0, "-1"}})},
+                        {"gas_density", 1.25, not_positive},
+                        {"diameter", 1e-4, not_positive}},
+                       [](const ValuesOf<T>& v) {
+                         return T(int(fluidization::geldart_group(v[0], v[1], v[2], fluidbed::checked)));
+                       });
 }

@@ -178,6 +178,24 @@ def law_gidaspow_blended(ef, eps, w, rho, mu, d, Re, Rf):
     return tuple((1 - psi) * a + psi * b for a, b in zip(e, y))
 
 
+LEBOREIRO_SWITCH, LEBOREIRO_HALF_WIDTH = Fraction('0.54'), Fraction('0.02')
+
+
+def law_gidaspow_leboreiro(ef, eps, w, rho, mu, d, Re, Rf):
+    """Ergun and WenYuGidaspow joined by the cubic Hermite step 3t^2 - 2t^3 over 0.54 +- 0.02
+    (t decided on the exact decimal voidage)"""
+    tf = (ef - LEBOREIRO_SWITCH + LEBOREIRO_HALF_WIDTH) / (2 * LEBOREIRO_HALF_WIDTH)
+    if tf <= 0:
+        return law_ergun(ef, eps, w, rho, mu, d, Re, Rf)
+    if tf >= 1:
+        return law_wenyu_gidaspow(ef, eps, w, rho, mu, d, Re, Rf)
+    t = mpf(tf.numerator) / tf.denominator
+    s = t * t * (3 - 2 * t)
+    e = law_ergun(ef, eps, w, rho, mu, d, Re, Rf)
+    y = law_wenyu_gidaspow(ef, eps, w, rho, mu, d, Re, Rf)
+    return tuple((1 - s) * a + s * b for a, b in zip(e, y))
+
+
 def make_difelice(cdre):
     def law(ef, eps, w, rho, mu, d, Re, Rf):
         phi = 1 - eps
@@ -297,6 +315,7 @@ LAWS = [
     ('WenYuGidaspow', law_wenyu_gidaspow, None),
     ('GidaspowSwitched', law_gidaspow_switched, None),
     ('GidaspowBlended', law_gidaspow_blended, None),
+    ('GidaspowLeboreiro', law_gidaspow_leboreiro, None),
     ('DiFeliceDallavalle', law_difelice_dv, None),
     ('DiFeliceSchillerNaumann', law_difelice_sn, None),
     ('MazzeiLettieri', law_mazzei_lettieri, None),
@@ -309,6 +328,8 @@ LAWS = [
 ]
 
 EPS_GRID = ['0.35', '0.4', '0.45', '0.5', '0.6', '0.7', '0.8', '0.85', '0.9', '0.95', '0.99', '1.0']
+# voidages inside a law's own switching window, added to its rows
+EXTRA_EPS = {'GidaspowLeboreiro': ['0.52', '0.53', '0.54', '0.55', '0.56']}
 FLUIDS = [
     # (rho, mu, d, Re grid)
     ('1.2', '1.8e-5', '5e-4', ['0', '1e-3', '0.1', '1', '10', '50', '200', '999', '1500', '1e4']),
@@ -555,7 +576,7 @@ def main():
     rows = ['law,voidage,slip,fluid_density,fluid_viscosity,diameter,reynolds,beta_classical,beta_pressure_gradient']
     for name, law, keep in LAWS:
         for rho_s, mu_s, d_s, res in FLUIDS:
-            for eps_s in EPS_GRID:
+            for eps_s in sorted(EPS_GRID + EXTRA_EPS.get(name, []), key=Fraction):
                 for Re_s in res:
                     st = state(eps_s, rho_s, mu_s, d_s, Re_s)
                     ef, eps, w, rho, mu, d, Re, Rf = st

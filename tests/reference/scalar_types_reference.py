@@ -136,7 +136,7 @@ def drag_laws():
         return beta
 
     # ConstantExponentDrag holds its exponent as a double: 2.65 for Lewis and WenYuGidaspow (also the
-    # dilute branch of both Gidaspow laws)
+    # dilute branch of the three Gidaspow laws)
     def constant_exponent(alpha):
         return generic(dr.make_wenyu_classical(exact_text(alpha)))
     lewis = constant_exponent(2.65)
@@ -151,10 +151,17 @@ def drag_laws():
         psi = M('0.5') + dr.atan(150 * M('1.75') * (eps - M('0.8'))) / dr.pi
         return ((1 - psi) * generic(dr.law_ergun)(eps, w, rho, mu, d)[0] +
                 psi * wen_yu_gidaspow(eps, w, rho, mu, d)[0], None)
+    # GidaspowLeboreiro's switch voidage and half-width are doubles too (0.54 and 0.02 as the C++ holds them)
+    def gidaspow_leboreiro(eps, w, rho, mu, d):
+        switch, half_width = mpf(0.54), mpf(0.02)
+        t = (eps - switch + half_width) / (2 * half_width)
+        s = mpf(0) if t <= 0 else mpf(1) if t >= 1 else t * t * (3 - 2 * t)
+        return ((1 - s) * generic(dr.law_ergun)(eps, w, rho, mu, d)[0] +
+                s * wen_yu_gidaspow(eps, w, rho, mu, d)[0], None)
     laws = {name: generic(law) for name, law, _ in dr.LAWS}
     laws.update({'Lewis': lewis, 'WenYu1966': constant_exponent(2.70), 'Kmiec': constant_exponent(2.78),
                  'WenYuGidaspow': wen_yu_gidaspow, 'GidaspowSwitched': gidaspow_switched,
-                 'GidaspowBlended': gidaspow_blended,
+                 'GidaspowBlended': gidaspow_blended, 'GidaspowLeboreiro': gidaspow_leboreiro,
                  'MazzeiLettieri': lambda eps, w, rho, mu, d: (mazzei_lettieri_classical(eps, w, rho, mu, d), None)})
     keep = {name: k for name, _, k in dr.LAWS}
     return [(name, (lambda f: lambda *args: f(*args)[0])(laws[name]), keep[name]) for name, _, _ in dr.LAWS]

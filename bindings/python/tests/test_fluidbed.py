@@ -196,7 +196,7 @@ def test_parameters_and_classes():
         cls = type(fluidbed.closure(name))
         assert cls.__name__ == name
         assert getattr(getattr(fluidbed, cls.__module__.split(".")[1]), name) is cls
-    assert len(fluidbed.closure_names()) == 69
+    assert len(fluidbed.closure_names()) == 70
 
 
 def test_help_shows_equation_convention_validity_and_reference():

@@ -40,7 +40,7 @@ struct DragFamily {
 // The registry of the family: every law, each preset included (registry.hpp). Extend it
 // with a law of your own: `using MyDragLaws = DragLaws::with<MyLaw>;`.
 using DragLaws =
-    Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended,
+    Registry<DragFamily, Ergun, ConstantExponentDrag, GidaspowSwitched, GidaspowBlended, GidaspowLeboreiro,
              DiFelice<single_particle::DallavalleCoefficient>, DiFelice<single_particle::SchillerNaumannCoefficient>,
              MazzeiLettieri, VanDerHoef, Beetstra, Tang, Tenneti, KochHill, SyamlalOBrien>;
 

@@ -1,11 +1,15 @@
-// fluidbed — Gidaspow's combination of Ergun and Wen–Yu, switched and blended.
+// fluidbed — Gidaspow's combination of Ergun and Wen–Yu: switched, blended, and switched
+// smoothly at a voidage the caller sets (Leboreiro et al.).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <string_view>
 
 #include "../core/constants.hpp"
+#include "../core/domain.hpp"
 #include "../core/dual.hpp"
+#include "../core/parameters.hpp"
 #include "wen_yu.hpp"
 #include "drag_law.hpp"
 #include "ergun.hpp"
@@ -83,6 +87,73 @@ struct GidaspowBlended : DragLaw<GidaspowBlended> {
     const S psi = blending_weight(voidage);
     return (1 - psi) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
            psi * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+  }
+};
+
+
+// Gidaspow's Ergun/Wen–Yu pair joined smoothly at a switch voidage the caller sets, after
+// Leboreiro, J., Joseph, G.G., Hrenya, C.M. (2008), "Revisiting the standard drag law for
+// bubbling, gas-fluidized beds", Powder Technol. 183, 385–400, doi:10.1016/j.powtec.2008.01.008,
+// as seed 001 §3.3 reports it: the jump of eq. 45 (GidaspowSwitched) is unphysical, a smooth
+// switch changes the simulated bed noticeably, and the switch point matters, a solids fraction
+// φ_s = 0.46 (ε_s = 0.54) being a better choice than 0.2. Seed 001 gives no formula for the
+// smoothing ("for example linear interpolation between the two models near the transition
+// point"), and the paper's own could not be checked here, so the weight is this library's:
+// the cubic Hermite step over the window ε_s ± δ,
+//
+//   t = (ε − ε_s + δ)/(2δ),   s = 0 (t <= 0),  3t² − 2t³ (0 < t < 1),  1 (t >= 1)
+//   β = (1 − s) β_Ergun + s β_WenYuGidaspow                 (pressure-gradient convention)
+//
+// Exactly Ergun for ε <= ε_s − δ and exactly Wen–Yu (Gidaspow's, exponent 2.65) for
+// ε >= ε_s + δ; β and ∂β/∂ε continuous everywhere (s' = 0 at both window edges), which an
+// implicit solver linearising in ε needs; at ε_s, s = ½ and β is the mean of the two laws.
+// Linear interpolation would be continuous too but would give ∂β/∂ε two jumps.
+// Parameters: switch_voidage ε_s ∈ (0, 1) (default 0.54, Leboreiro et al.'s φ_s = 0.46),
+// half_width δ > 0 (default 0.02, this library's choice, not the paper's); ε_s = 0.8 with a
+// small δ is a smoothed GidaspowSwitched. Reynolds numbers as in ergun.hpp and wen_yu.hpp.
+struct GidaspowLeboreiro : DragLaw<GidaspowLeboreiro> {
+  static constexpr Buoyancy native_buoyancy = Buoyancy::pressure_gradient;
+
+  double switch_voidage;  // ε_s
+  double half_width;      // δ
+
+  constexpr explicit GidaspowLeboreiro(double switch_voidage = 0.54, double half_width = 0.02)
+      : switch_voidage(switch_voidage), half_width(half_width) {}
+
+  constexpr std::string_view name() const { return "GidaspowLeboreiro"; }
+  constexpr std::string_view reference() const {
+    return "Leboreiro, J., Joseph, G.G., Hrenya, C.M. (2008) Powder Technol. 183, 385-400, "
+           "doi:10.1016/j.powtec.2008.01.008; Gidaspow, D. (1994) Multiphase Flow and Fluidization, Academic Press";
+  }
+  constexpr ValidityRange validity() const { return {0.36, 1.0, 0.0, 1.0e5}; }
+
+  template <class T>
+  FLUIDBED_HOST_DEVICE constexpr Arguments<T, 2> parameter_domain() const {
+    return {{{"switch_voidage", T(switch_voidage), domains::open(T(0), T(1))},
+             {"half_width", T(half_width), domains::positive<T>()}}};
+  }
+  static constexpr auto parameters() {
+    return std::array{parameter<&GidaspowLeboreiro::switch_voidage>("switch_voidage"),
+                      parameter<&GidaspowLeboreiro::half_width>("half_width")};
+  }
+
+  // The Wen–Yu weight s(ε) above.
+  template <class S>
+  FLUIDBED_HOST_DEVICE S switch_weight(const S& voidage) const {
+    using T = value_type_of<S>;
+    const S t = (voidage - (T(switch_voidage) - T(half_width))) / (2 * T(half_width));
+    if (t <= T(0)) return S(T(0));
+    if (t >= T(1)) return S(T(1));
+    return t * t * (3 - 2 * t);
+  }
+
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
+    const S s = switch_weight(voidage);
+    if (s == T(0)) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
+    if (s == T(1)) return GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+    return (1 - s) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
+           s * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
   }
 };
 

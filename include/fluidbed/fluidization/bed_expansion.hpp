@@ -302,4 +302,72 @@ FLUIDBED_HOST_DEVICE constexpr T bed_height(const T& initial_height, const T& in
   return initial_height * (1 - initial_voidage) / (1 - voidage);
 }
 
+// ----------------------------------------------------------------------------- response time
+
+// A homogeneous bed that expands after a step in the superficial velocity u₁ → u₂ > u₁ at
+// t = 0, from equilibrium (u₁, h₁) to equilibrium (u₂, h₂ > h₁) (seed 000 §4.3.3 and §4.5.2,
+// eqs. 4.1 and 4.9–4.13). Suited to stable (liquid-fluidized) beds, where the new equilibrium
+// is homogeneous.
+template <class T>
+struct ExpansionStep {
+  T initial_height;    // h₁ [m]
+  T initial_velocity;  // u₁ [m s⁻¹], superficial
+  T final_height;      // h₂ [m]
+  T final_velocity;    // u₂ [m s⁻¹], superficial
+};
+
+namespace detail {
+
+// The domain of a step, declared once: h₁ > 0, u₁ >= 0, h₂ > h₁, u₂ > u₁ (an expansion).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr Arguments<T, 4> expansion_step_domain(const ExpansionStep<T>& step) {
+  return {{{"initial_height", step.initial_height, domains::positive<T>()},
+           {"initial_velocity", step.initial_velocity, domains::non_negative<T>()},
+           {"final_height", step.final_height, domains::greater_than(step.initial_height),
+            "must be finite and > initial_height: an expanding bed"},
+           {"final_velocity", step.final_velocity, domains::greater_than(step.initial_velocity),
+            "must be finite and > initial_velocity: a step up in the fluid flux"}}};
+}
+
+}  // namespace detail
+
+// The time constant of the expansion, τ = (h₂ − h₁)/(u₂ − u₁) (seed 000 eq. 4.2): the time
+// the bed would take to reach h₂ if it kept its initial rate of rise h'(0) = u₂ − u₁
+// (eq. 4.13; the rate of rise equals the step in fluid flux only at t = 0, when the bed
+// still has its two-region structure). From minimum fluidization, (u₁, h₁) = (u_mf, h_mf)
+// (eq. 4.2); with u₁ = 0 and h₁ the initial height h₀ it is eq. 4.3, τ ≈ (h − h₀)/u, the
+// approximation for u_mf ≪ u.
+// Domain: h₁ > 0, u₁ >= 0, h₂ > h₁, u₂ > u₁ (std::domain_error under fluidbed::checked).
+template <class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE constexpr T expansion_time_constant(const ExpansionStep<T>& step, Policy policy = {}) {
+  check_domain(policy, "expansion_time_constant", detail::expansion_step_domain(step));
+  return (step.final_height - step.initial_height) / (step.final_velocity - step.initial_velocity);
+}
+
+// The response time t_e = 3τ of seed 000 eq. 4.2: h(t_e) − h₁ = (1 − e⁻³)(h₂ − h₁), 95.0 %
+// of the expansion. Seed 000's examples: the Richardson & Zaki (1954) system (u_mf 1.30·10⁻⁴,
+// u 4.70·10⁻⁴ m s⁻¹, h 0.30 → 0.39 m) takes t_e ≈ 800 s (eq. 4.4), its gas-fluidized bed
+// (u_mf 8.73·10⁻³, u 5.77·10⁻² m s⁻¹, h 0.30 → 0.45 m) about 9 s (eq. 4.5).
+// Domain as expansion_time_constant's.
+template <class T, ErrorPolicy Policy = Unchecked>
+FLUIDBED_HOST_DEVICE constexpr T expansion_response_time(const ExpansionStep<T>& step, Policy policy = {}) {
+  check_domain(policy, "expansion_response_time", detail::expansion_step_domain(step));
+  return 3 * expansion_time_constant(step);
+}
+
+// The bed height during the expansion (seed 000 eq. 4.1):
+//
+//   h(t) = h₂ − (h₂ − h₁) exp(−t/τ),   τ = (h₂ − h₁)/(u₂ − u₁),
+//
+// h(0) = h₁, h'(0) = u₂ − u₁, h → h₂. Seed 000 Fig. 4.13 finds it in close agreement with
+// its CFD expansion profile. Domain: the step's, and t >= 0.
+template <class T, ErrorPolicy Policy = Unchecked>
+T expanding_bed_height(const ExpansionStep<T>& step, const T& time, Policy policy = {}) {
+  using std::exp;
+  check_domain(policy, "expanding_bed_height",
+               join(detail::expansion_step_domain(step),
+                    arguments(Argument<T>{"time", time, domains::non_negative<T>()})));
+  return step.final_height - (step.final_height - step.initial_height) * exp(-time / expansion_time_constant(step));
+}
+
 }  // namespace fluidbed::fluidization
