@@ -46,14 +46,15 @@ constexpr std::string_view name(GeldartGroup group) {
 //        shape, charge and the fines content, so powders of 20–40 µm can fall either side.
 //   A/B  Δρ d = 0.225 kg m⁻², Geldart's (1973) boundary, (ρ_p − ρ_g) d = 225 with ρ in g cm⁻³
 //        and d in µm: where the minimum bubbling velocity meets u_mf (u_mb/u_mf = 1), from
-//        his data in air; about ±20 % in d from the scatter of those data.
+//        his data in air. The data scatter about the line; ±20 % in d is this library's
+//        reading of that scatter, not a number of the paper.
 //   B/D  Δρ d² = 10⁻³ kg m⁻¹, Geldart's (1973) boundary, (ρ_p − ρ_g) d² = 10⁶ with ρ in g cm⁻³
 //        and d in µm: where bubbles become slower than the interstitial gas (d ≈ 620 µm for
 //        sand); a gradual transition rather than a sharp line.
 // A powder exactly on a boundary belongs to the coarser group (C/A at 30 µm: A).
 // Validity: air (or gases of like density and viscosity) near ambient conditions, Δρ from
 // about 100 to 10⁴ kg m⁻³ (the chart's range); at elevated pressure or temperature the
-// boundaries shift (the gas properties enter u_mf and u_mb), which these lines ignore. Beyond
+// boundaries shift (the gas properties enter u_mf and u_mb), which these lines ignore. Below
 // Δρ ≈ 50 kg m⁻³ (where the A/B and B/D lines cross, at d = 4.4 mm) the classification is an
 // extrapolation of the chart.
 struct GeldartBoundaries {
