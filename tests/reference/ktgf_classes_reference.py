@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Independent high-precision reference generator for the multi-class kinetic theory of
 granular flow with unequal granular temperatures (Lathouwers & Bellan 2001, Int. J.
-Multiphase Flow 27, 2155-2187, doi:10.1016/S0301-9322(01)00061-5; seed 004's "Constitutive
+Multiphase Flow 27, 2155-2187; seed 004's "Constitutive
 particle-phase equations" and "Granular pressure and transport coefficients" slides).
 
 Writes (next to this file):
@@ -27,38 +27,13 @@ import sys
 
 sys.dont_write_bytecode = True  # keep the folder free of __pycache__
 
-from mpmath import mp, mpf, sqrt, pi, nstr, diff, log10, floor, exp, quad, inf  # noqa: E402
+from mpmath import mp, mpf, sqrt, pi, nstr, diff, exp, quad, inf  # noqa: E402
 
 mp.dps = 40
+# The decimal input, output and checking helpers of the one-class generator (never re-typed).
+from ktgf_reference import M, out, chk, differs, NCHK  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 NMAX = 4  # class columns in the file
-
-
-def M(s):
-    """exact decimal string -> mpf"""
-    return mpf(s)
-
-
-def out(x):
-    return nstr(mpf(x), 17)
-
-
-NCHK = [0]
-
-
-def chk(x, ref, rel=None, what=''):
-    """assert x equals the printed decimal `ref` to half a unit of its last printed digit
-    (or to `rel` relative if given)"""
-    r = mpf(ref)
-    if rel is None:
-        s = ref.lower().split('e')[0].lstrip('-+').replace('.', '').lstrip('0')
-        nsig = max(len(s), 1)
-        half = mpf('0.5') * mpf(10) ** (int(floor(log10(abs(r)))) - nsig + 1) if r != 0 else mpf(0)
-        tol = max(half * M('1.000001'), abs(r) * M('1e-12'))
-    else:
-        tol = abs(r) * mpf(rel)
-    assert abs(x - r) <= tol, '%s: %s vs %s' % (what, nstr(x, 12), ref)
-    NCHK[0] += 1
 
 
 def same(x, y, what, rel='1e-30', scale=None):
@@ -67,11 +42,6 @@ def same(x, y, what, rel='1e-30', scale=None):
     if scale is None:
         scale = max(abs(x), abs(y))
     assert abs(x - y) <= M(rel) * scale, '%s: %s vs %s' % (what, nstr(x, 20), nstr(y, 20))
-    NCHK[0] += 1
-
-
-def differs(printed, correct, what):
-    assert abs(printed - correct) > M('1e-6') * abs(correct), what
     NCHK[0] += 1
 
 
