@@ -69,6 +69,7 @@
 #include <string>
 #include <string_view>
 
+#include "../core/registry.hpp"
 #include "../core/vector3.hpp"
 #include "granular_state.hpp"
 #include "mixture_radial_distribution.hpp"
@@ -168,14 +169,8 @@ FLUIDBED_HOST_DEVICE ClassKineticValues<U, N> map_class_values(const ClassKineti
 
 template <class RadialDistribution = ModifiedMansoori>
 struct UnequalTemperatureMixture {
-  RadialDistribution radial_distribution = default_radial_distribution();
-
-  static constexpr RadialDistribution default_radial_distribution() {
-    if constexpr (requires { RadialDistribution::registered(); })
-      return RadialDistribution::registered()[0];
-    else
-      return RadialDistribution{};
-  }
+  // By default the law's first registered preset (ModifiedMansoori: φ_max = 0.64, seed 004's).
+  RadialDistribution radial_distribution = fluidbed::detail::registered_instances<RadialDistribution>()[0];
 
   constexpr std::string_view name() const { return "UnequalTemperatureMixture"; }
   constexpr std::string_view reference() const {
