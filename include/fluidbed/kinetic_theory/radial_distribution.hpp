@@ -221,33 +221,52 @@ struct MaAhmadi : SolidFractionLaw<MaAhmadi> {
 // Both → 1 as φ → 0, with the slope 4 c_1 + b/φ_cp (2.50024 and 2.49975; the second virial
 // coefficient gives 5/2).
 
+namespace detail {
+
+// What the two fits share: a pole φ_cp that is a constant of the fit (Law::max_packing<T>()), and
+// the whole published formula Law::formula(φ) continued linearly above φ_cp − packing_margin.
+template <class Law>
+struct CompressibilityFit : SolidFractionLaw<Law> {
+  double packing_margin;
+
+  constexpr explicit CompressibilityFit(double packing_margin_) : packing_margin(packing_margin_) {}
+  constexpr Validity<1> validity() const {
+    return {{{"solid_fraction", 0.0, Law::template max_packing<double>()}}};
+  }
+  constexpr Arguments<double, 2> parameter_domain() const {
+    return packing_domain(Law::template max_packing<double>(), packing_margin);
+  }
+  // The pole is a constant of the fit, not a parameter.
+  static constexpr auto parameters() {
+    return std::array{parameter<&CompressibilityFit::packing_margin, Law>("packing_margin")};
+  }
+  template <class S>
+  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
+    using T = value_type_of<S>;
+    return continued_linearly_above(phi, Law::template max_packing<T>() - T(packing_margin),
+                                    [](const auto& q) { return Law::formula(q); });
+  }
+};
+
+}  // namespace detail
+
 // Song, Stratt & Mason (1988), J. Chem. Phys. 88, 1126 (seed 002 Table III prints "Strat"),
 // φ_cp = 0.6435, b = 0.76:
 //   c_n = 1, 0.3298, 0.08867, 0.01472, 0.0005396, −0.0003574, −0.0005705, −0.0001212, −0.0001151.
 // Validity: declared up to the fit's pole φ_cp = 0.6435 (random close packing), as for Ma–Ahmadi;
 // seed 002 Fig. 23 compares it with hard-sphere molecular dynamics.
-struct SongStrattMason : SolidFractionLaw<SongStrattMason> {
+struct SongStrattMason : detail::CompressibilityFit<SongStrattMason> {
   template <class T>
   FLUIDBED_HOST_DEVICE static constexpr T max_packing() {
     return FLUIDBED_DECIMAL(T, 0.6435);
   }
-  double packing_margin = default_packing_margin;
 
-  constexpr explicit SongStrattMason(double packing_margin_ = default_packing_margin)
-      : packing_margin(packing_margin_) {}
+  constexpr explicit SongStrattMason(double packing_margin_ = default_packing_margin) : CompressibilityFit{packing_margin_} {}
   constexpr std::string_view name() const { return "SongStrattMason"; }
   constexpr std::string_view reference() const {
     return "Song, Y., Stratt, R.M. & Mason, E.A. (1988) J. Chem. Phys. 88, 1126-1133; seed 002 eq. 77, Table III";
   }
-  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing<double>()}}}; }
-  constexpr Arguments<double, 2> parameter_domain() const {
-    return detail::packing_domain(max_packing<double>(), packing_margin);
-  }
-  // The pole is a constant of the fit, not a parameter.
-  static constexpr auto parameters() {
-    return std::array{parameter<&SongStrattMason::packing_margin>("packing_margin")};
-  }
-  // The published formula, for any scalar (continued above φ_cp − packing_margin by kernel).
+  // The published formula, for any scalar (continued above φ_cp − packing_margin by the base).
   template <class S>
   FLUIDBED_HOST_DEVICE static S formula(const S& phi) {
     using std::pow;
@@ -264,12 +283,6 @@ struct SongStrattMason : SolidFractionLaw<SongStrattMason> {
                                                x * FLUIDBED_DECIMAL(T, -0.0001151))))))));
     return polynomial * pow(1 - phi / max_packing<T>(), FLUIDBED_DECIMAL(T, -0.76));
   }
-  template <class S>
-  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
-    using T = value_type_of<S>;
-    return detail::continued_linearly_above(phi, max_packing<T>() - T(packing_margin),
-                                            [](const auto& q) { return formula(q); });
-  }
 };
 
 // Tobochnik & Chapin (1988), J. Chem. Phys. 88, 5824 (as credited by seed 002 Table III),
@@ -278,28 +291,18 @@ struct SongStrattMason : SolidFractionLaw<SongStrattMason> {
 //         −0.00008182.
 // Validity: declared up to the fit's pole φ_cp = 0.6875, as Table III gives it; above random
 // close packing (≈ 0.64) there is no disordered hard-sphere state to compare it with.
-struct TobochnikChapin : SolidFractionLaw<TobochnikChapin> {
+struct TobochnikChapin : detail::CompressibilityFit<TobochnikChapin> {
   template <class T>
   FLUIDBED_HOST_DEVICE static constexpr T max_packing() {
     return FLUIDBED_DECIMAL(T, 0.6875);
   }
-  double packing_margin = default_packing_margin;
 
-  constexpr explicit TobochnikChapin(double packing_margin_ = default_packing_margin)
-      : packing_margin(packing_margin_) {}
+  constexpr explicit TobochnikChapin(double packing_margin_ = default_packing_margin) : CompressibilityFit{packing_margin_} {}
   constexpr std::string_view name() const { return "TobochnikChapin"; }
   constexpr std::string_view reference() const {
     return "Tobochnik, J. & Chapin, P.M. (1988) J. Chem. Phys. 88, 5824; seed 002 eq. 77, Table III";
   }
-  constexpr Validity<1> validity() const { return {{{"solid_fraction", 0.0, max_packing<double>()}}}; }
-  constexpr Arguments<double, 2> parameter_domain() const {
-    return detail::packing_domain(max_packing<double>(), packing_margin);
-  }
-  // The pole is a constant of the fit, not a parameter.
-  static constexpr auto parameters() {
-    return std::array{parameter<&TobochnikChapin::packing_margin>("packing_margin")};
-  }
-  // The published formula, for any scalar (continued above φ_cp − packing_margin by kernel).
+  // The published formula, for any scalar (continued above φ_cp − packing_margin by the base).
   template <class S>
   FLUIDBED_HOST_DEVICE static S formula(const S& phi) {
     using T = value_type_of<S>;
@@ -314,12 +317,6 @@ struct TobochnikChapin : SolidFractionLaw<TobochnikChapin> {
                                           x * (FLUIDBED_DECIMAL(T, -0.00003636) +
                                                x * FLUIDBED_DECIMAL(T, -0.00008182))))))));
     return polynomial / (1 - phi / max_packing<T>());
-  }
-  template <class S>
-  FLUIDBED_HOST_DEVICE S kernel(const S& phi) const {
-    using T = value_type_of<S>;
-    return detail::continued_linearly_above(phi, max_packing<T>() - T(packing_margin),
-                                            [](const auto& q) { return formula(q); });
   }
 };
 
