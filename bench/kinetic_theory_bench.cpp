@@ -120,11 +120,12 @@ std::vector<GranularClassesState<double, N>> make_mixture_cells() {
   for (int c = 0; c < cells; ++c) {
     const Cell& cell = field[c];
     auto& s = out[c];
+    const auto weight = [c](std::size_t i) { return 1.0 + double((c * 13 + 7 * int(i)) % 5); };  // 1 … 5
     double weights = 0;
-    for (std::size_t i = 0; i < N; ++i) weights += 1.0 + double((c * 13 + 7 * int(i)) % 5);
+    for (std::size_t i = 0; i < N; ++i) weights += weight(i);
     for (std::size_t i = 0; i < N; ++i) {
       const double u = double((c * 29 + 11 * int(i)) % 97) / 96;
-      s.fractions[i] = std::min(cell.solid_fraction, 0.6) * (1.0 + double((c * 13 + 7 * int(i)) % 5)) / weights;
+      s.fractions[i] = std::min(cell.solid_fraction, 0.6) * weight(i) / weights;
       s.temperatures[i] = cell.granular_temperature * std::pow(10.0, 2 * u - 1);
       s.diameters[i] = 100e-6 + 700e-6 * double(i + 1) / double(N + 1);
       s.densities[i] = 900.0 + 6900.0 * u;
