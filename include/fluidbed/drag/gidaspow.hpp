@@ -51,6 +51,18 @@ struct GidaspowSwitched : DragLaw<GidaspowSwitched> {
                                                          const T& diameter) {
     return voidage * ConstantExponentDrag::wen_yu_gidaspow().native_beta(voidage, slip, fluid, diameter);
   }
+
+  // (1 − w) β_Ergun + w β_WenYuGidaspow (pressure-gradient convention), the blends below; where the
+  // weight w is exactly 0 or 1, that branch alone (the other law is not evaluated).
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE static S blend(const S& wen_yu_weight, const S& voidage, const S& slip, const Fluid<T>& fluid,
+                                      const T& diameter) {
+    using V = value_type_of<S>;
+    if (wen_yu_weight == V(0)) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
+    if (wen_yu_weight == V(1)) return pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+    return (1 - wen_yu_weight) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
+           wen_yu_weight * pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+  }
 };
 
 // The arctan blend of Ergun and Wen–Yu of Lu Huilin & Gidaspow (2003), Chem. Eng. Sci.
@@ -84,12 +96,9 @@ struct GidaspowBlended : DragLaw<GidaspowBlended> {
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
-    const S psi = blending_weight(voidage);
-    return (1 - psi) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
-           psi * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+    return GidaspowSwitched::blend(blending_weight(voidage), voidage, slip, fluid, diameter);
   }
 };
-
 
 // Gidaspow's Ergun/Wen–Yu pair joined smoothly at a switch voidage the caller sets, after
 // Leboreiro, J., Joseph, G.G., Hrenya, C.M. (2008), "Revisiting the standard drag law for
@@ -149,11 +158,7 @@ struct GidaspowLeboreiro : DragLaw<GidaspowLeboreiro> {
 
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
-    const S s = switch_weight(voidage);
-    if (s == T(0)) return Ergun{}.native_beta(voidage, slip, fluid, diameter);
-    if (s == T(1)) return GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
-    return (1 - s) * Ergun{}.native_beta(voidage, slip, fluid, diameter) +
-           s * GidaspowSwitched::pressure_gradient_wen_yu(voidage, slip, fluid, diameter);
+    return GidaspowSwitched::blend(switch_weight(voidage), voidage, slip, fluid, diameter);
   }
 };
 
