@@ -317,7 +317,7 @@ TEST_CASE("sieve analyses: edges not one more than fractions give NaN, false, an
 
 TEST_CASE("invert_batched: spans of different lengths give false and nothing read or written") {
   constexpr int N = 2;
-  constexpr std::size_t cells = 20;  // a full lane of 16 doubles and a partial one
+  constexpr std::size_t cells = 20;  // full lanes (8 or 16 doubles) and a partial one
   const std::vector<double> m = powder(2 * N);
   std::vector<std::vector<double>> fields(2 * N, std::vector<double>(cells));
   for (std::size_t k = 0; k < 2 * N; ++k)

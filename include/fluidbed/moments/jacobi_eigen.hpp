@@ -76,6 +76,38 @@ FLUIDBED_HOST_DEVICE Quadrature<T, N> gauss_closed_form(const Recurrence<T, N>& 
   return q;
 }
 
+namespace detail {
+
+// The start of a QL sweep at level l (tql2's form of the Wilkinson shift from the leading 2×2
+// block): g = d_m − d_l + e_l/(h + sign(h)√(h² + 1)), h = (d_{l+1} − d_l)/(2 e_l), on a scalar or
+// a lane of cells. Shared by gauss_golub_welsch and its lanes in batched.hpp.
+template <class V>
+FLUIDBED_HOST_DEVICE V ql_sweep_start(const V& d_l, const V& d_next, const V& e_l, const V& d_m) {
+  using ops = lane_ops<V>;
+  using T = typename ops::scalar;
+  const V h = (d_next - d_l) / (T(2) * e_l);
+  return d_m - d_l + e_l / (h + ops::sign(h) * ops::sqrt(h * h + T(1)));
+}
+
+// The rest of one plane rotation of the QL chase at rows i, i + 1, once its sine s and cosine c
+// are known (b = c_previous·e_i): the diagonal pair, the running p and g, and the first row of
+// the eigenvector matrix. Shared likewise.
+template <class V>
+FLUIDBED_HOST_DEVICE void ql_rotate(const V& s, const V& c, const V& b, V& p, V& g, V& d_i, V& d_next, V& z_i,
+                                    V& z_next) {
+  using T = typename lane_ops<V>::scalar;
+  g = d_next - p;
+  const V r = (d_i - g) * s + T(2) * c * b;
+  p = s * r;
+  d_next = g + p;
+  g = c * r - b;
+  const V top = z_next;
+  z_next = s * z_i + c * top;
+  z_i = c * z_i - s * top;
+}
+
+}  // namespace detail
+
 // Implicit QL with Wilkinson shifts on the symmetric tridiagonal J (the algorithm of
 // EISPACK tql2: Bowdler, Martin, Reinsch & Wilkinson (1968), Numer. Math. 11, 293–306),
 // accumulating only the first row of the eigenvector matrix. Deflation is relative
@@ -112,10 +144,8 @@ FLUIDBED_HOST_DEVICE bool gauss_golub_welsch(const Recurrence<T, N>& r, Quadratu
         return false;
       }
       // Wilkinson shift from the leading 2×2 block, then the chase from m up to l.
-      T g = (d[l + 1] - d[l]) / (T(2) * e[l]);
-      T radius = sqrt(g * g + T(1));
-      g = d[m] - d[l] + e[l] / (g + (g < T(0) ? -radius : radius));
-      T s(1), c(1), p(0);
+      T g = detail::ql_sweep_start(d[l], d[l + 1], e[l], d[m]);
+      T s(1), c(1), p(0), radius(1);
       int i = m - 1;
       for (; i >= l; --i) {
         const T f = s * e[i];
@@ -129,14 +159,7 @@ FLUIDBED_HOST_DEVICE bool gauss_golub_welsch(const Recurrence<T, N>& r, Quadratu
         }
         s = f / radius;
         c = g / radius;
-        g = d[i + 1] - p;
-        radius = (d[i] - g) * s + T(2) * c * b;
-        p = s * radius;
-        d[i + 1] = g + p;
-        g = c * radius - b;
-        const T top = z[i + 1];  // the plane rotation, on the first eigenvector row only
-        z[i + 1] = s * z[i] + c * top;
-        z[i] = c * z[i] - s * top;
+        detail::ql_rotate(s, c, b, p, g, d[i], d[i + 1], z[i], z[i + 1]);
       }
       if (radius == T(0) && i >= l) continue;
       d[l] -= p;
