@@ -10,14 +10,23 @@
 //                  (OpenQBMM's per-cell univariateMomentSet and its dense EigenMatrix, a
 //                  JAMA/EISPACK tred2 + tql2 with every eigenvector; Uintah's CQMOM likewise
 //                  solves a dense Jacobi matrix)
-//   wheeler_ql     invert<N>(): Wheeler + closed form (n <= 2) or Golub–Welsch QL
+//   wheeler_ql     invert<N>(): Wheeler + closed form (n <= 2), three-node solver (n = 3) or
+//                  Golub–Welsch QL
 //   pd_ql          invert<N>() with product-difference
 //   wheeler_eigen  invert_eigen<N>(): Wheeler + Eigen's tridiagonal solver
 //   batched        invert_batched() on structure-of-arrays fields
+//   batched_float  the same in float (the moments rounded to float)
+//   stream         the streaming limit of the batched path: read the 2N moment fields and write
+//                  the N node and N weight fields (a copy), nothing computed
 //
-// Every path reads the same 4096 distinct cells and writes every node and weight. The cells
-// are lognormal number distributions in SI units (median 20–500 µm, σ_ln 0.15–0.6, number
-// density 1e9–1e12 m⁻³), all realizable with N nodes (checked at start-up).
+// Every path reads the same 4096 distinct cells and writes every node and weight. Two sets of
+// cells in SI units (number density 1e9–1e12 m⁻³):
+//   lognormal  log-normal number distributions, median 20–500 µm, σ_ln 0.15–0.6;
+//   atoms      N atoms per cell, diameters log-uniform over 10 µm – 1 mm (σ_ln ≈ 1.3 per cell),
+//              number fractions uniform over 0.05–1.05: the wide distributions of polydisperse
+//              beds, where the nodes come close and the QL sweeps more.
+// The count of cells that are not realizable with N nodes in double is printed at start-up (the
+// paths then take the reduced rule; all are realizable in exact arithmetic).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Dense>
@@ -42,27 +51,44 @@ namespace {
 constexpr int cells = 4096;
 constexpr int max_nodes = 8;
 
-// The moments of cell c: m_k = n exp(k μ + k² σ²/2), the parameters spread over their ranges
-// by coprime strides so that no two cells coincide.
+enum class Cells { lognormal, atoms };
+
+const char* name(Cells set) { return set == Cells::lognormal ? "lognormal" : "atoms"; }
+
+// A fraction in (0, 1) for cell c, spread by a coprime stride so that no two cells coincide.
+double spread(int c, int stride) { return ((c * stride) % cells + 0.5) / cells; }
+
+// The moments of cell c of a set (see the header comment): m_k = n exp(k μ + k² σ²/2) for the
+// log-normal cells, Σ_i n_i d_i^k (in long double, then rounded) for the atoms.
 template <int N>
-std::vector<std::array<double, 2 * N>> cell_moments() {
+std::vector<std::array<double, 2 * N>> cell_moments(Cells set) {
   std::vector<std::array<double, 2 * N>> out(cells);
   for (int c = 0; c < cells; ++c) {
-    const double u = ((c * 37) % cells + 0.5) / cells, v = ((c * 101) % cells + 0.5) / cells,
-                 w = ((c * 211) % cells + 0.5) / cells;
-    const double median = 20e-6 * std::pow(25.0, u), sigma = 0.15 + 0.45 * v, density = 1e9 * std::pow(1e3, w);
-    for (int k = 0; k < 2 * N; ++k)
-      out[c][k] = density * std::exp(k * std::log(median) + 0.5 * k * k * sigma * sigma);
+    const double density = 1e9 * std::pow(1e3, spread(c, 211));
+    if (set == Cells::lognormal) {
+      const double median = 20e-6 * std::pow(25.0, spread(c, 37)), sigma = 0.15 + 0.45 * spread(c, 101);
+      for (int k = 0; k < 2 * N; ++k)
+        out[c][k] = density * std::exp(k * std::log(median) + 0.5 * k * k * sigma * sigma);
+      continue;
+    }
+    long double sum[2 * N] = {};
+    for (int i = 0; i < N; ++i) {
+      const int atom = c * N + i;
+      const long double size = 1e-5L * std::pow(100.0L, (long double)spread(atom % cells, 37 + 2 * i) );
+      const long double number = density * (0.05L + spread((atom * 7 + 3) % cells, 101 + 2 * i));
+      for (int k = 0; k < 2 * N; ++k) sum[k] += number * std::pow(size, (long double)k);
+    }
+    for (int k = 0; k < 2 * N; ++k) out[c][k] = double(sum[k]);
   }
   return out;
 }
 
 // The same cells as fields: moment k of cell c at fields[k][c].
-template <int N>
-std::vector<std::vector<double>> cell_fields(const std::vector<std::array<double, 2 * N>>& m) {
-  std::vector<std::vector<double>> fields(2 * N, std::vector<double>(cells));
+template <class T, int N>
+std::vector<std::vector<T>> cell_fields(const std::vector<std::array<double, 2 * N>>& m) {
+  std::vector<std::vector<T>> fields(2 * N, std::vector<T>(cells));
   for (int k = 0; k < 2 * N; ++k)
-    for (int c = 0; c < cells; ++c) fields[k][c] = m[c][k];
+    for (int c = 0; c < cells; ++c) fields[k][c] = T(m[c][k]);
   return fields;
 }
 
@@ -101,14 +127,67 @@ int baseline_invert(const double* moments, int count, double* nodes, double* wei
   return size;
 }
 
-template <int N>
-struct Fixture {
-  std::vector<std::array<double, 2 * N>> moments = cell_moments<N>();
-  std::vector<std::vector<double>> fields = cell_fields<N>(moments);
-  std::vector<double> nodes = std::vector<double>(std::size_t(N) * cells);  // per-cell paths: cell-major
-  std::vector<double> weights = std::vector<double>(std::size_t(N) * cells);
+// Output fields of a batch in T, node-major (nodes[i][c]).
+template <class T, int N>
+struct BatchFields {
+  std::vector<std::vector<T>> moments;
+  std::vector<T> nodes = std::vector<T>(std::size_t(N) * cells), weights = nodes;
   std::vector<int> sizes = std::vector<int>(cells);
   std::vector<InversionStatus> status = std::vector<InversionStatus>(cells);
+  MomentBatch<T, N> in;
+  QuadratureBatch<T, N> out;
+
+  explicit BatchFields(const std::vector<std::array<double, 2 * N>>& m) : moments(cell_fields<T, N>(m)) {
+    for (int k = 0; k < 2 * N; ++k) in.moments[k] = moments[k];
+    for (int i = 0; i < N; ++i) {
+      out.nodes[i] = std::span<T>(nodes).subspan(std::size_t(i) * cells, cells);
+      out.weights[i] = std::span<T>(weights).subspan(std::size_t(i) * cells, cells);
+    }
+    out.sizes = sizes;
+    out.status = status;
+  }
+
+  void batched(benchmark::State& state) {
+    if (!invert_batched(in, out)) state.SkipWithError("invert_batched: arrays of different lengths");
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(invert_batched(in, out));
+      benchmark::DoNotOptimize(nodes.data());
+      benchmark::DoNotOptimize(weights.data());
+      benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * cells);
+  }
+
+  // The memory traffic of batched() alone.
+  void stream(benchmark::State& state) {
+    for (auto _ : state) {
+      for (int i = 0; i < N; ++i) {
+        const T* x = in.moments[i].data();
+        const T* w = in.moments[N + i].data();
+        T* nodes_i = out.nodes[i].data();
+        T* weights_i = out.weights[i].data();
+        for (int c = 0; c < cells; ++c) {
+          nodes_i[c] = x[c];
+          weights_i[c] = w[c];
+        }
+      }
+      benchmark::DoNotOptimize(nodes.data());
+      benchmark::DoNotOptimize(weights.data());
+      benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * cells);
+  }
+};
+
+template <int N>
+struct Fixture {
+  explicit Fixture(Cells set) : moments(cell_moments<N>(set)), fields(moments), float_fields(moments) {}
+
+  std::vector<std::array<double, 2 * N>> moments;
+  BatchFields<double, N> fields;
+  BatchFields<float, N> float_fields;
+  std::vector<double> nodes = std::vector<double>(std::size_t(N) * cells);  // per-cell paths: cell-major
+  std::vector<double> weights = std::vector<double>(std::size_t(N) * cells);
 
   template <class Invert>
   void per_cell(benchmark::State& state, Invert invert) {
@@ -138,27 +217,7 @@ struct Fixture {
     state.SetItemsProcessed(state.iterations() * cells);
   }
 
-  void batched(benchmark::State& state) {
-    MomentBatch<double, N> in;
-    for (int k = 0; k < 2 * N; ++k) in.moments[k] = fields[k];
-    QuadratureBatch<double, N> out;
-    for (int i = 0; i < N; ++i) {
-      out.nodes[i] = std::span<double>(nodes).subspan(std::size_t(i) * cells, cells);  // node-major: nodes[i][c]
-      out.weights[i] = std::span<double>(weights).subspan(std::size_t(i) * cells, cells);
-    }
-    out.sizes = sizes;
-    out.status = status;
-    if (!invert_batched(in, out)) state.SkipWithError("invert_batched: arrays of different lengths");
-    for (auto _ : state) {
-      benchmark::DoNotOptimize(invert_batched(in, out));
-      benchmark::DoNotOptimize(nodes.data());
-      benchmark::DoNotOptimize(weights.data());
-      benchmark::ClobberMemory();
-    }
-    state.SetItemsProcessed(state.iterations() * cells);
-  }
-
-  // The cells must all be realizable with N nodes, else the paths would do different work.
+  // Cells not realizable with N nodes in double (the paths then do different work).
   int unrealizable() const {
     int count = 0;
     for (const auto& m : moments) count += invert<N>(m).status != InversionStatus::ok;
@@ -167,29 +226,32 @@ struct Fixture {
 };
 
 template <int N>
-void register_benchmarks() {
-  static Fixture<N> f;
-  if (const int bad = f.unrealizable(); bad > 0)
-    std::printf("warning: %d of the N = %d cells are not realizable with %d nodes\n", bad, N, N);
-  const std::string n = std::to_string(N);
-  benchmark::RegisterBenchmark(("baseline/" + n).c_str(), [](benchmark::State& s) { f.baseline(s); });
-  benchmark::RegisterBenchmark(("wheeler_ql/" + n).c_str(), [](benchmark::State& s) {
-    f.per_cell(s, [](const std::array<double, 2 * N>& m) { return invert<N>(m); });
+void register_benchmarks(Cells set) {
+  auto* f = new Fixture<N>(set);  // lives as long as the registered benchmarks
+  const std::string row = std::string(name(set)) + "/" + std::to_string(N);
+  if (const int bad = f->unrealizable(); bad > 0)
+    std::printf("%s: %d of the %d cells are not realizable with %d nodes in double\n", row.c_str(), bad, cells, N);
+  benchmark::RegisterBenchmark(("baseline/" + row).c_str(), [f](benchmark::State& s) { f->baseline(s); });
+  benchmark::RegisterBenchmark(("wheeler_ql/" + row).c_str(), [f](benchmark::State& s) {
+    f->per_cell(s, [](const std::array<double, 2 * N>& m) { return invert<N>(m); });
   });
-  benchmark::RegisterBenchmark(("pd_ql/" + n).c_str(), [](benchmark::State& s) {
-    f.per_cell(s, [](const std::array<double, 2 * N>& m) {
+  benchmark::RegisterBenchmark(("pd_ql/" + row).c_str(), [f](benchmark::State& s) {
+    f->per_cell(s, [](const std::array<double, 2 * N>& m) {
       return invert<N>(m, {.algorithm = RecurrenceAlgorithm::product_difference});
     });
   });
-  benchmark::RegisterBenchmark(("wheeler_eigen/" + n).c_str(), [](benchmark::State& s) {
-    f.per_cell(s, [](const std::array<double, 2 * N>& m) { return invert_eigen<N>(m); });
+  benchmark::RegisterBenchmark(("wheeler_eigen/" + row).c_str(), [f](benchmark::State& s) {
+    f->per_cell(s, [](const std::array<double, 2 * N>& m) { return invert_eigen<N>(m); });
   });
-  benchmark::RegisterBenchmark(("batched/" + n).c_str(), [](benchmark::State& s) { f.batched(s); });
+  benchmark::RegisterBenchmark(("batched/" + row).c_str(), [f](benchmark::State& s) { f->fields.batched(s); });
+  benchmark::RegisterBenchmark(("batched_float/" + row).c_str(),
+                               [f](benchmark::State& s) { f->float_fields.batched(s); });
+  benchmark::RegisterBenchmark(("stream/" + row).c_str(), [f](benchmark::State& s) { f->fields.stream(s); });
 }
 
 template <int... N>
 void register_all(std::integer_sequence<int, N...>) {
-  (register_benchmarks<N + 1>(), ...);
+  for (Cells set : {Cells::lognormal, Cells::atoms}) (register_benchmarks<N + 1>(set), ...);
 }
 
 }  // namespace
@@ -200,9 +262,13 @@ int main(int argc, char** argv) {
   fluidbed::bench::RatioReporter reporter(cells);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::vector<std::string> rows;
-  for (int n = 1; n <= max_nodes; ++n) rows.push_back(std::to_string(n));
+  for (Cells set : {Cells::lognormal, Cells::atoms})
+    for (int n = 1; n <= max_nodes; ++n) rows.push_back(std::string(name(set)) + "/" + std::to_string(n));
   reporter.print_table(
-      "N (nodes)", rows, {"baseline", "wheeler_ql", "pd_ql", "wheeler_eigen", "batched"},
-      [](const std::string& n) { return "baseline/" + n; }, "baseline/N");
+      "cells/N (nodes)", rows, {"baseline", "wheeler_ql", "pd_ql", "wheeler_eigen", "batched", "stream"},
+      [](const std::string& row) { return "baseline/" + row; }, "baseline/cells/N");
+  reporter.print_table(
+      "cells/N (nodes)", rows, {"batched", "batched_float"}, [](const std::string& row) { return "batched/" + row; },
+      "the double batched/cells/N");
   benchmark::Shutdown();
 }
