@@ -102,8 +102,8 @@ struct lane_ops<Eigen::Array<T, L, 1>> {
 // of divisions and square roots, few enough that a kernel's live lane values stay in the vector
 // registers: a quarter of the register file, 64 bytes with SSE (16 registers of 16 bytes: 8
 // doubles, 16 floats), 128 with AVX and AVX-512. Measured at N = 8 (4096 log-normal cells,
-// g++ 12 -O3): 308 ns per cell with 64-byte lanes against 406 with 128 under SSE2, 134 with 128
-// against 222 with 64 under AVX-512.
+// g++ 12 -O3): 308 ns per cell with 64-byte lanes against 406 with 128 under SSE2; 156 with 128
+// against 207 with 64 under AVX2 and FMA; 134 with 128 against 222 with 64 under AVX-512.
 #if defined(EIGEN_VECTORIZE_AVX)
 inline constexpr int lane_bytes = 128;
 #else
