@@ -15,9 +15,10 @@
 //      three-node solver for n = 3, the Golub–Welsch QL on lanes for n >= 4;
 //   5. exact unscaling.
 // A cell whose mask fails anywhere (empty, non-finite, not fully realizable, scale factors
-// out of range, non-finite result) is inverted again by the per-cell invert(), so that its
-// status, reduced rule and every special case are exactly those of the per-cell pipeline.
-// Only such cells pay for a branch; the lanes never branch on data.
+// out of range, non-finite result) is inverted again by the per-cell pipeline, so that its
+// status, node count and every special case are exactly those of invert(); a rule it reduces to
+// 4 … N − 1 nodes is then solved on lanes with others of that count (ReducedRuleQueues), any
+// other by invert() itself. Only such cells pay for a branch; the lanes never branch on data.
 //
 // Host only: the lanes are Eigen arrays. On a GPU, call invert() per thread (the
 // structure-of-arrays layout is then the coalesced one).
@@ -339,10 +340,125 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
   }
 }
 
-// Inverts `count` <= L cells from cell `first` on: the lane kernel, then the per-cell
-// invert() for every cell it did not validate.
+// Writes the rule and status of cell c.
+template <class T, int N>
+void store_rule(const QuadratureBatch<T, N>& out, std::size_t c, const Quadrature<T, N>& q, InversionStatus status) {
+  out.sizes[c] = q.size;
+  out.status[c] = status;
+  for (int k = 0; k < N; ++k) {
+    out.nodes[k][c] = q.nodes[k];
+    out.weights[k][c] = q.weights[k];
+  }
+}
+
+// Cells the lanes did not validate whose rule invert() reduces to 4 … N − 1 nodes (sets that
+// rounding left unrealizable beyond them: a quarter of random 8-atom cells in double). Their
+// scaled recurrences wait here, one queue per node count, and are solved on lanes once L of a
+// count have gathered, and at the end of the batch, instead of by the per-cell QL.
+template <class T, int N>
+struct ReducedRuleQueues {
+  using V = Lanes<T>;
+  static constexpr int L = int(V::SizeAtCompileTime);
+  struct Queue {
+    V alpha[N], beta[N];
+    std::size_t cell[L];
+    MomentScaling scaling[L];
+    int size = 0;
+  };
+  Queue queues[N > 5 ? N - 4 : 1];  // queues[k − 4] for k nodes
+};
+
+// Solves a queue of K-node recurrences on lanes and stores the rules; a cell whose lane or unscaled
+// rule is not finite is inverted again by invert(). Empties the queue.
+template <Support support, int K, class T, int N>
+void solve_reduced_queue(typename ReducedRuleQueues<T, N>::Queue& queue, const MomentBatch<T, N>& in,
+                         const QuadratureBatch<T, N>& out) {
+  using V = Lanes<T>;
+  V alpha[K], beta[K], x[K], w[K];
+  for (int k = 0; k < K; ++k) {
+    alpha[k] = queue.alpha[k];
+    beta[k] = queue.beta[k];
+    for (int i = queue.size; i < int(V::SizeAtCompileTime); ++i) {  // padding lanes: a copy of lane 0
+      alpha[k][i] = alpha[k][0];
+      beta[k][i] = beta[k][0];
+    }
+  }
+  LaneGuards<V> guards;
+  gauss_golub_welsch_lanes(alpha, beta, x, w, guards);
+  for (int i = 0; i < queue.size; ++i) {
+    Quadrature<T, N> q;
+    q.size = K;
+    for (int k = 0; k < K; ++k) {
+      q.nodes[k] = x[k][i];
+      q.weights[k] = w[k][i];
+    }
+    bool valid = guards.passes(i) && finite_rule(q);
+    if (valid) {
+      unscale(q, queue.scaling[i]);
+      valid = finite_rule(q);
+    }
+    const std::size_t c = queue.cell[i];
+    if (valid) {
+      store_rule(out, c, q, InversionStatus::reduced);
+      continue;
+    }
+    T cell[2 * N];
+    for (int k = 0; k < 2 * N; ++k) cell[k] = in.moments[k][c];
+    const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell, 2 * N), {.support = support});
+    store_rule(out, c, result.quadrature, result.status);
+  }
+  queue.size = 0;
+}
+
+// The queue of k nodes, k = K … N − 1, solved (a run-time count to the compile-time K).
+template <Support support, class T, int N, int K = 4>
+void solve_reduced_queue(ReducedRuleQueues<T, N>& queues, int k, const MomentBatch<T, N>& in,
+                         const QuadratureBatch<T, N>& out) {
+  if constexpr (K < N) {
+    if (k == K)
+      solve_reduced_queue<support, K, T, N>(queues.queues[K - 4], in, out);
+    else
+      solve_reduced_queue<support, T, N, K + 1>(queues, k, in, out);
+  }
+}
+
+// A cell the lanes did not validate: invert() decides its status, size and rule, except that a
+// rule reduced to 4 … N − 1 nodes is queued (its status and size stored now, its nodes when its
+// queue is solved).
 template <Support support, class T, int N>
-void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, const QuadratureBatch<T, N>& out) {
+void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T, N>& queues,
+                 const QuadratureBatch<T, N>& out) {
+  T cell[2 * N];
+  for (int k = 0; k < 2 * N; ++k) cell[k] = in.moments[k][c];
+  const std::span<const T> moments(cell, 2 * N);
+  Recurrence<T, N> reduced;
+  const InversionResult<T, N> result = invert_with<T, N>(
+      moments, {.support = support}, [&reduced](const Recurrence<T, N>& r, Quadrature<T, N>& q) {
+        if (r.size >= 4 && r.size < N) {  // queued; q holds zeros meanwhile
+          reduced = r;
+          q.size = r.size;
+          return true;
+        }
+        return solve_recurrence(r, q, EigenSolver::automatic);
+      });
+  store_rule(out, c, result.quadrature, result.status);
+  if (reduced.size == 0 || result.status != InversionStatus::reduced) return;
+  auto& queue = queues.queues[reduced.size - 4];
+  const int i = queue.size++;
+  for (int k = 0; k < reduced.size; ++k) {
+    queue.alpha[k][i] = reduced.alpha[k];
+    queue.beta[k][i] = reduced.beta[k];
+  }
+  queue.cell[i] = c;
+  queue.scaling[i] = scaling_of(moments);  // invert_with's (scaled_moments)
+  if (queue.size == ReducedRuleQueues<T, N>::L) solve_reduced_queue<support>(queues, reduced.size, in, out);
+}
+
+// Inverts `count` <= L cells from cell `first` on: the lane kernel, then invert_cell() for every
+// cell it did not validate.
+template <Support support, class T, int N>
+void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, ReducedRuleQueues<T, N>& queues,
+                  const QuadratureBatch<T, N>& out) {
   using V = Lanes<T>;
   constexpr int L = int(V::SizeAtCompileTime);
   V m[2 * N];
@@ -373,16 +489,8 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, con
     if (guards.passes(i)) {
       out.sizes[c] = N;
       out.status[c] = InversionStatus::ok;
-      continue;
-    }
-    T cell[2 * N];
-    for (int k = 0; k < 2 * N; ++k) cell[k] = m[k][i];
-    const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell, 2 * N), {.support = support});
-    out.sizes[c] = result.quadrature.size;
-    out.status[c] = result.status;
-    for (int k = 0; k < N; ++k) {
-      out.nodes[k][c] = result.quadrature.nodes[k];
-      out.weights[k][c] = result.quadrature.weights[k];
+    } else {
+      invert_cell<support>(in, c, queues, out);
     }
   }
 }
@@ -391,8 +499,11 @@ template <Support support, class T, int N>
 void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
   constexpr std::size_t L = std::size_t(batch_lanes<T>);
   const std::size_t cells = in.cells();
+  ReducedRuleQueues<T, N> queues;
   for (std::size_t first = 0; first < cells; first += L)
-    invert_lanes<support>(in, first, int(cells - first < L ? cells - first : L), out);
+    invert_lanes<support>(in, first, int(cells - first < L ? cells - first : L), queues, out);
+  for (int k = 4; k < N; ++k)
+    if (queues.queues[k - 4].size > 0) solve_reduced_queue<support>(queues, k, in, out);
 }
 
 // Whether every span of a batch has as many entries as it has cells.

@@ -116,19 +116,30 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
 // The Gauss quadrature of the first n nodes, n = m.size()/2 <= N (2n moments m_0 … m_{2n−1}).
 // No preconditions: a count other than 2, 4, … 2N is invalid_input (see above), and so is
 // everything else the data can be a status.
+namespace detail {
+
+// invert()'s eigen step (see EigenSolver): the quadrature of a scaled recurrence into q, false on
+// failure.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE bool solve_recurrence(const Recurrence<T, N>& r, Quadrature<T, N>& q, EigenSolver solver) {
+  if (solver == EigenSolver::automatic) {
+    if (r.size <= 2) {
+      q = gauss_closed_form(r);
+      return true;
+    }
+    if constexpr (N >= 3)
+      if (r.size == 3 && gauss_three_nodes_within_limit(r, q) && finite_rule(q))
+        return true;  // else beyond the spread limit, or a β underflowed in the adjugate: the QL
+  }
+  return gauss_golub_welsch(r, q);
+}
+
+}  // namespace detail
+
 template <class T, int N>
 FLUIDBED_HOST_DEVICE InversionResult<T, N> invert(std::span<const T> m, const InversionOptions& options = {}) {
   return detail::invert_with<T, N>(m, options, [&options](const Recurrence<T, N>& r, Quadrature<T, N>& q) {
-    if (options.solver == EigenSolver::automatic) {
-      if (r.size <= 2) {
-        q = gauss_closed_form(r);
-        return true;
-      }
-      if constexpr (N >= 3)
-        if (r.size == 3 && detail::gauss_three_nodes_within_limit(r, q) && detail::finite_rule(q))
-          return true;  // else beyond the spread limit, or a β underflowed in the adjugate: the QL
-    }
-    return gauss_golub_welsch(r, q);
+    return detail::solve_recurrence(r, q, options.solver);
   });
 }
 
