@@ -147,22 +147,53 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const D
   return r;
 }
 
+// With a constant operand: the products and quotients with its zero derivatives are not
+// formed (the same results, to the sign of a zero derivative).
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, U c) { return a + Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(a);
+  r.value = a.value + T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) + a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(U c, const Dual<T, N>& a) {
+  Dual<T, N> r(a);
+  r.value = T(c) + a.value;
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, U c) { return a - Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(a);
+  r.value = a.value - T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) - a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(U c, const Dual<T, N>& a) {
+  Dual<T, N> r = -a;
+  r.value = T(c) - a.value;
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, U c) { return a * Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, U c) {
+  return detail::chain(T(a.value * T(c)), T(c), a);
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) * a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(U c, const Dual<T, N>& a) {
+  return detail::chain(T(T(c) * a.value), T(c), a);
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) { return a / Dual<T, N>(T(c)); }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(T(a.value / T(c)));
+  for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] / T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) {
+  const T q = T(c) / a.value;
+  Dual<T, N> r(q);
+  for (int i = 0; i < N; ++i) r.derivative[i] = -detail::times(q, a.derivative[i]) / a.value;
+  return r;
+}
 
 namespace detail {
 
@@ -228,14 +259,29 @@ FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
   return detail::chain(T(atan(x.value)), T(1) / (T(1) + x.value * x.value), x);
 }
 
-// x^p for a constant exponent. The slope p·x^(p-1) is formed directly (never
-// x^p·p/x), so x = 0 gives the right 0 or ∞.
+namespace detail {
+
+// p·x^(p−1) given f = x^p: p·f/x, one pow fewer than forming x^(p−1), where that is exact to
+// rounding (f and the quotient normal numbers); else formed directly, so that x = 0 gives the
+// right 0 or ∞ and an f or a slope beyond the normal range loses no digits.
+template <class T>
+FLUIDBED_HOST_DEVICE T power_slope(const T& x, const T& exponent, const T& f) {
+  using std::isnormal;
+  using std::pow;
+  if (exponent == T(0)) return T(0);
+  const T slope = exponent * (f / x);
+  return isnormal(f) && isnormal(slope) ? slope : T(exponent * T(pow(x, exponent - T(1))));
+}
+
+}  // namespace detail
+
+// x^p for a constant exponent.
 template <class T, int N, ConstantFor<T> U>
 FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, U p) {
   using std::pow;
   const T exponent(p);
-  const T slope = exponent == T(0) ? T(0) : exponent * T(pow(x.value, exponent - T(1)));
-  return detail::chain(T(pow(x.value, exponent)), slope, x);
+  const T f = pow(x.value, exponent);
+  return detail::chain(f, detail::power_slope(x.value, exponent, f), x);
 }
 
 // a^y for a constant base a > 0 (or a = 0 with y > 0).
@@ -254,7 +300,7 @@ FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const Dual<T, N>& y) {
   using std::log;
   using std::pow;
   const T f = pow(x.value, y.value);
-  const T slope_x = y.value == T(0) ? T(0) : y.value * T(pow(x.value, y.value - T(1)));
+  const T slope_x = detail::power_slope(x.value, y.value, f);
   const T slope_y = x.value > T(0) ? T(f * log(x.value)) : T(0);
   Dual<T, N> r(f);
   for (int i = 0; i < N; ++i)
