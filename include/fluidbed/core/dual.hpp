@@ -104,6 +104,13 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain(const T& f, const T& slope, cons
 
 }  // namespace detail
 
+// f(x) for a function whose value f and slope f'(x) the caller has formed already (a closure
+// that reuses the pieces of its value, or solves an implicit relation in T).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain_rule(const T& f, const T& slope, const Dual<T, N>& x) {
+  return detail::chain(f, slope, x);
+}
+
 // A plain constant that may be mixed with Dual<T, N> (a literal, or T itself).
 template <class U, class T>
 concept ConstantFor = std::is_arithmetic_v<U> || std::same_as<U, T>;

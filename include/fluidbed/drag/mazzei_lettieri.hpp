@@ -150,26 +150,52 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
                T(2) * log(FLUIDBED_DECIMAL(T, 0.63) * state.root_reynolds + FLUIDBED_DECIMAL(T, 4.8) / e));
   }
 
+  // ∂β/∂ε and ∂β/∂w of a solved state, through the first-order variations (dual numbers of value
+  // 0) of ln ε and ln Re: no second solve and no transcendental function. Writing
+  // β = P (1 − ε) Q, P = ¾ μ_f/d², Q = ε^(1 − n) (0.63 √Re* + 4.8)², x = ln Re*,
+  //   δx     = (δ ln Re − n δ ln ε)/g'              implicit function theorem on g(x) = 0,
+  //                                                 g' = 1 + a, a = 1.8 (−ln ε) r (1 − r), r = 1/(1 + y)
+  //   δ ln Q = (1 − n) δ ln ε + (c − a) δx,         c = 0.63 √Re*/(0.63 √Re* + 4.8)
+  // (dn/dx = −1.8 r (1 − r)); c and 1 − r are formed without cancellation where they are small,
+  // so that ∂β/∂w keeps its digits where Re* → 0 (c, 1 − r → 0).
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE static S beta_with_derivatives(const SolvedState<T>& state, const T& beta, const S& voidage,
+                                                      const S& re, const T& prefactor) {
+    const T e = value_of(voidage);
+    const T y = state.scaled_power;
+    const T r = T(1) / (T(1) + y);
+    const T a = FLUIDBED_DECIMAL(T, -1.8) * state.log_voidage * r * (y < T(1) ? y * r : T(1) - r);
+    const T root_star = state.root_reynolds * state.inverse_root_power;  // √Re*
+    const T root = FLUIDBED_DECIMAL(T, 0.63) * root_star + FLUIDBED_DECIMAL(T, 4.8);
+    const T c = root < T(2) * FLUIDBED_DECIMAL(T, 4.8) ? FLUIDBED_DECIMAL(T, 0.63) * root_star / root
+                                                        : T(1) - FLUIDBED_DECIMAL(T, 4.8) / root;
+    const T k = (c - a) / (T(1) + a);  // δ ln Q = (1 − n − k n) δ ln ε + k δ ln Re
+    const S d_log_q = chain_rule(T(0), (T(1) - state.exponent - k * state.exponent) / e, voidage) +
+                      chain_rule(T(0), k / value_of(re), re);
+    const T q = e * root * root * (state.inverse_root_power * state.inverse_root_power);
+    S result = prefactor * (1 - voidage) * chain_rule(q, q, d_log_q);
+    result.value = beta;  // the hot path's value, bit for bit
+    return result;
+  }
+
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
-    using std::exp;
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
     const T prefactor = T(0.75) * fluid.viscosity / (diameter * diameter);
-    if constexpr (std::is_same_v<S, T>) {
-      if (re > T(0)) {
-        return beta_of_state(solve_state(re, voidage), voidage, fluid, diameter);
-      }
+    if (value_of(re) > T(0)) {
+      const SolvedState<T> state = solve_state(value_of(re), value_of(voidage));
+      const T beta = beta_of_state(state, value_of(voidage), fluid, diameter);
+      if constexpr (std::is_same_v<S, T>)
+        return beta;
+      else
+        return beta_with_derivatives(state, beta, voidage, re, prefactor);
     }
-    const S re_star = effective_reynolds(voidage, re);
-    // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
+    // Re = 0: Re* = Re ε^−4.8, and n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
-    const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(FLUIDBED_DECIMAL(T, 4.8));
-    S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
-             pow(voidage, 1 - exponent);
-    if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
-      if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
-    return beta;
+    const S re_star = effective_reynolds(voidage, re);
+    return prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
+           pow(voidage, 1 - FLUIDBED_DECIMAL(T, 4.8));
   }
 };
 
