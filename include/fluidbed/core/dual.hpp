@@ -148,9 +148,9 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const D
 template <class T, int N>
 FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b) {
   const T q = a.value / b.value;
+  const T inverse = T(1) / b.value;  // a division per operand, not per derivative
   Dual<T, N> r(q);
-  for (int i = 0; i < N; ++i)
-    r.derivative[i] = (a.derivative[i] - detail::times(q, b.derivative[i])) / b.value;
+  for (int i = 0; i < N; ++i) r.derivative[i] = (a.derivative[i] - detail::times(q, b.derivative[i])) * inverse;
   return r;
 }
 

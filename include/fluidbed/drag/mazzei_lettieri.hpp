@@ -169,9 +169,11 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
     const T root = FLUIDBED_DECIMAL(T, 0.63) * root_star + FLUIDBED_DECIMAL(T, 4.8);
     const T c = root < T(2) * FLUIDBED_DECIMAL(T, 4.8) ? FLUIDBED_DECIMAL(T, 0.63) * root_star / root
                                                         : T(1) - FLUIDBED_DECIMAL(T, 4.8) / root;
-    const T k = (c - a) / (T(1) + a);  // δ ln Q = (1 − n − k n) δ ln ε + k δ ln Re
+    // k = (c − a)/(1 + a): δ ln Q = (1 − n − k n) δ ln ε + k δ ln Re; one division on the path.
+    const T k_over_re = (c - a) / ((T(1) + a) * value_of(re));
+    const T k = k_over_re * value_of(re);
     const S d_log_q = chain_rule(T(0), (T(1) - state.exponent - k * state.exponent) / e, voidage) +
-                      chain_rule(T(0), k / value_of(re), re);
+                      chain_rule(T(0), k_over_re, re);
     const T q = e * root * root * (state.inverse_root_power * state.inverse_root_power);
     S result = prefactor * (1 - voidage) * chain_rule(q, q, d_log_q);
     result.value = beta;  // the hot path's value, bit for bit
