@@ -121,22 +121,26 @@ struct KochHill : DragLaw<KochHill> {
   // Re_h where the branches meet: Re_T (φ > 0.01) or Re_T1 (φ ≤ 0.01).
   template <class S>
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
-    using std::sqrt;
     using T = value_type_of<S>;
-    if (phi <= dilute_solid_fraction<T>()) return (f2(phi) - 1) / (T(0.375) - f3(phi));
-    const S a = f1(phi);
-    const S b = f3(phi);
-    return (b + sqrt(b * b - 4 * a * (f0(phi) - f2(phi)))) / (2 * a);
+    if (phi <= dilute_solid_fraction<T>()) return dilute_transition(f2(phi), f3(phi));
+    return dense_transition(f0(phi), f1(phi), f2(phi), f3(phi));
   }
 
-  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside).
+  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside). Each F_i once.
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using T = value_type_of<S>;
     const S re_h = T(0.5) * re;
-    if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= dilute_solid_fraction<T>()) return 1 + T(0.375) * re_h;
-    return f0(phi) + f1(phi) * (re_h * re_h);
+    const S high_intercept = f2(phi);
+    const S high_slope = f3(phi);
+    if (phi <= dilute_solid_fraction<T>())
+      return re_h > dilute_transition(high_intercept, high_slope) ? high_intercept + high_slope * re_h
+                                                                   : 1 + T(0.375) * re_h;
+    const S low_intercept = f0(phi);
+    const S low_curvature = f1(phi);
+    if (re_h > dense_transition(low_intercept, low_curvature, high_intercept, high_slope))
+      return high_intercept + high_slope * re_h;
+    return low_intercept + low_curvature * (re_h * re_h);
   }
 
   template <class S, class T>
@@ -146,6 +150,20 @@ struct KochHill : DragLaw<KochHill> {
   }
 
  private:
+  // Re_T1 = (F2 − 1)/(0.375 − F3), where 1 + 0.375 Re_h meets the high-Re line (φ ≤ 0.01).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S dilute_transition(const S& f2, const S& f3) {
+    using T = value_type_of<S>;
+    return (f2 - 1) / (T(0.375) - f3);
+  }
+
+  // Re_T, the larger root of F0 + F1 Re_h² = F2 + F3 Re_h (φ > 0.01).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S dense_transition(const S& f0, const S& f1, const S& f2, const S& f3) {
+    using std::sqrt;
+    return (f3 + sqrt(f3 * f3 - 4 * f1 * (f0 - f2))) / (2 * f1);
+  }
+
   // (1 − w_b) R(a, b, c) + w_b 10φ/ε³ for φ < 0.4, 10φ/ε³ above. At φ = 0 it is 1: the
   // φ ln φ term and w_b take their limits (0), so nothing evaluates 0·∞.
   template <class S>
