@@ -152,28 +152,25 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
 
   // ∂β/∂ε and ∂β/∂w of a solved state, through the first-order variations (dual numbers of value
   // 0) of ln ε and ln Re: no second solve and no transcendental function. Writing
-  // β = P (1 − ε) Q, P = ¾ μ_f/d², Q = ε^(1 − n) (0.63 √Re* + 4.8)², x = ln Re*,
-  //   δx     = (δ ln Re − n δ ln ε)/g'              implicit function theorem on g(x) = 0,
-  //                                                 g' = 1 + a, a = 1.8 (−ln ε) r (1 − r), r = 1/(1 + y)
-  //   δ ln Q = (1 − n) δ ln ε + (c − a) δx,         c = 0.63 √Re*/(0.63 √Re* + 4.8)
-  // (dn/dx = −1.8 r (1 − r)); c and 1 − r are formed without cancellation where they are small,
-  // so that ∂β/∂w keeps its digits where Re* → 0 (c, 1 − r → 0).
+  // β = P (1 − ε) Q, P = ¾ μ_f/d², Q = ε^(1 − n) (0.63 √Re* + 4.8)², x = ln Re*, L = ln ε,
+  // p = 1 + y (y = 0.175 Re*^¾, dn/dx = −1.8 y/p²), s = √Re*, R = 0.63 s + 4.8:
+  //   δx     = (δ ln Re − n δL)/g',   g' = 1 − 1.8 L y/p²   implicit function theorem on g(x) = 0
+  //   δ ln Q = (1 − n) δL + (0.63 s/R + 1.8 L y/p²) δx = (1 − n − k n) δL + k δ ln Re,
+  //   k = (0.63 s p² + 1.8 L y R)/((p² − 1.8 L y) R):
+  // one division on the path, and no 1 − r or 1 − 4.8/R that would lose ∂β/∂w's digits where
+  // Re* → 0. y is held as in the solve (held_scaled_power), so that p² s stays finite.
   template <class S, class T>
   FLUIDBED_HOST_DEVICE static S beta_with_derivatives(const SolvedState<T>& state, const T& beta, const S& voidage,
                                                       const S& re, const T& prefactor) {
     const T e = value_of(voidage);
-    const T y = state.scaled_power;
-    const T r = T(1) / (T(1) + y);
-    const T a = FLUIDBED_DECIMAL(T, -1.8) * state.log_voidage * r * (y < T(1) ? y * r : T(1) - r);
+    const T y = settling::held_scaled_power(state.scaled_power);
+    const T p2 = (T(1) + y) * (T(1) + y);
+    const T y_slope = FLUIDBED_DECIMAL(T, 1.8) * state.log_voidage * y;  // 1.8 L y
     const T root_star = state.root_reynolds * state.inverse_root_power;  // √Re*
     const T root = FLUIDBED_DECIMAL(T, 0.63) * root_star + FLUIDBED_DECIMAL(T, 4.8);
-    const T c = root < T(2) * FLUIDBED_DECIMAL(T, 4.8) ? FLUIDBED_DECIMAL(T, 0.63) * root_star / root
-                                                        : T(1) - FLUIDBED_DECIMAL(T, 4.8) / root;
-    // k = (c − a)/(1 + a): δ ln Q = (1 − n − k n) δ ln ε + k δ ln Re; one division on the path.
-    const T k_over_re = (c - a) / ((T(1) + a) * value_of(re));
-    const T k = k_over_re * value_of(re);
-    const S d_log_q = chain_rule(T(0), (T(1) - state.exponent - k * state.exponent) / e, voidage) +
-                      chain_rule(T(0), k_over_re, re);
+    const T k = (FLUIDBED_DECIMAL(T, 0.63) * root_star * p2 + y_slope * root) / ((p2 - y_slope) * root);
+    const S d_log_q = chain_rule(T(0), (T(1) - state.exponent - k * state.exponent) * (T(1) / e), voidage) +
+                      chain_rule(T(0), k * (T(1) / value_of(re)), re);
     const T q = e * root * root * (state.inverse_root_power * state.inverse_root_power);
     S result = prefactor * (1 - voidage) * chain_rule(q, q, d_log_q);
     result.value = beta;  // the hot path's value, bit for bit
