@@ -158,12 +158,15 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
   //   δ ln Q = (1 − n) δL + (0.63 s/R + 1.8 L y/p²) δx = (1 − n − k n) δL + k δ ln Re,
   //   k = (0.63 s p² + 1.8 L y R)/((p² − 1.8 L y) R):
   // one division on the path, and no 1 − r or 1 − 4.8/R that would lose ∂β/∂w's digits where
-  // Re* → 0. y is held as in the solve (held_scaled_power), so that p² s stays finite.
+  // Re* → 0. y is held below 2^(max_exponent/5), so that p² s stays finite: beyond, the term
+  // 1.8 L y/p² ≈ 1.8 L/y it stands for is below the rounding of c ≈ 1 (in double for every ε).
   template <class S, class T>
   FLUIDBED_HOST_DEVICE static S beta_with_derivatives(const SolvedState<T>& state, const T& beta, const S& voidage,
                                                       const S& re, const T& prefactor) {
     const T e = value_of(voidage);
-    const T y = settling::held_scaled_power(state.scaled_power);
+    using std::ldexp;
+    const T y_cap = ldexp(T(1), std::numeric_limits<T>::max_exponent / 5);
+    const T y = state.scaled_power < y_cap ? state.scaled_power : y_cap;
     const T p2 = (T(1) + y) * (T(1) + y);
     const T y_slope = FLUIDBED_DECIMAL(T, 1.8) * state.log_voidage * y;  // 1.8 L y
     const T root_star = state.root_reynolds * state.inverse_root_power;  // √Re*

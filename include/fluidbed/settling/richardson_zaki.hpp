@@ -363,15 +363,6 @@ struct TerminalReynoldsSolution {
   T log_terminal_reynolds, scaled_power, log_voidage;
 };
 
-// y = 0.175 Re_t^¾ held below 2^(max_exponent/5): beyond, n = 2.4 + 2.4/(1 + y) is 2.4 to
-// rounding, and the forms in p = 1 + y below (up to p⁴, and p² times √Re_t) stay finite.
-template <class T>
-FLUIDBED_HOST_DEVICE T held_scaled_power(const T& y) {
-  using std::ldexp;
-  const T cap = ldexp(T(1), std::numeric_limits<T>::max_exponent / 5);
-  return y < cap ? y : cap;
-}
-
 // Halley's method on g(x) = x + n(eˣ) ln ε − ln Re, x = ln Re_t, from the middle of the
 // bracket [ln Re − 2.4 ln ε, ln Re − 4.8 ln ε] (n = 3.6). With y = 0.175 e^(0.75x),
 // r = 1/(1 + y) and L = ln ε:
@@ -384,8 +375,8 @@ FLUIDBED_HOST_DEVICE T held_scaled_power(const T& y) {
 //   S₁ = p² g' = p² − 1.8 L y,  S₂ = p³ g'' = −1.35 L y (1 − y):
 // one exp and one division per step (in r, r and the step are two divisions in series, the
 // longest part of the step's latency), no pow. S₁² ~ y⁴ would overflow once ln Re_t >~ 239
-// (double) or 32 (float) and turn the step into ∞/∞: y is held below 2^(max_exponent/5)
-// (held_scaled_power), where n = 2.4 + 2.4 r is 2.4 to rounding and g linear, so the held step is the step (in double the
+// (double) or 32 (float) and turn the step into ∞/∞: y is held below 2^(max_exponent/5),
+// where n = 2.4 + 2.4 r is 2.4 to rounding and g linear, so the held step is the step (in double the
 // term 2.4 L r < 1e-58 for every ε; in float it reaches the rounding of x only for ε <~ 1e-6).
 // y itself may overflow to +∞ (Re_t beyond the range of T).
 // Safeguard. For |L| >~ 20 (ε <~ 1e-9) n(eˣ) is a step of height 2.4 |L| a few units of x
@@ -404,6 +395,7 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
   using std::abs;
   using std::cbrt;
   using std::exp;
+  using std::ldexp;
   using std::log;
   const T log_voidage = log(voidage);
   const T log_re = log(reynolds);
@@ -414,10 +406,11 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
   T high = log_re - FLUIDBED_DECIMAL(T, 4.8) * log_voidage + 1;
   T x = log_re - FLUIDBED_DECIMAL(T, 3.6) * log_voidage;
   T previous = high - low;  // the size of the last step taken
+  const T y_cap = ldexp(T(1), std::numeric_limits<T>::max_exponent / 5);
   T y{};
   for (int iteration = 0; iteration < 100; ++iteration) {
     y = FLUIDBED_DECIMAL(T, 0.175) * exp(T(0.75) * x);
-    const T y_held = held_scaled_power(y);
+    const T y_held = y < y_cap ? y : y_cap;
     const T p = T(1) + y_held;
     const T g_p = (x + FLUIDBED_DECIMAL(T, 2.4) * log_voidage - log_re) * p + FLUIDBED_DECIMAL(T, 2.4) * log_voidage;
     const T d1_p2 = p * p - FLUIDBED_DECIMAL(T, 1.8) * log_voidage * y_held;
