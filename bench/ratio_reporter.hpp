@@ -35,17 +35,31 @@ class RatioReporter : public benchmark::ConsoleReporter {
                    const std::vector<std::string>& columns,
                    const std::function<std::string(const std::string& row)>& baseline,
                    const std::string& baseline_description) const {
+    std::vector<Column> with_baselines;
+    for (const std::string& column : columns) with_baselines.push_back({column, baseline});
+    print_table(row_title, rows, with_baselines, baseline_description);
+  }
+
+  // A column whose ratios have their own baseline (e.g. each row's own value for its derivatives).
+  struct Column {
+    std::string name;
+    std::function<std::string(const std::string& row)> baseline;
+  };
+
+  // The same with a baseline per column.
+  void print_table(const std::string& row_title, const std::vector<std::string>& rows,
+                   const std::vector<Column>& columns, const std::string& baseline_description) const {
     std::printf("\n%-20s", row_title.c_str());
-    for (const std::string& column : columns) std::printf(" %18s %7s", (column + " ns").c_str(), "ratio");
+    for (const Column& column : columns) std::printf(" %18s %7s", (column.name + " ns").c_str(), "ratio");
     std::printf("\n");
     for (const std::string& row : rows) {
       bool run = false;
-      for (const std::string& column : columns) run = run || ns_per_cell_.count(column + "/" + row) > 0;
+      for (const Column& column : columns) run = run || ns_per_cell_.count(column.name + "/" + row) > 0;
       if (!run) continue;
       std::printf("%-20s", row.c_str());
-      const auto base = ns_per_cell_.find(baseline(row));
-      for (const std::string& column : columns) {
-        const auto ns = ns_per_cell_.find(column + "/" + row);
+      for (const Column& column : columns) {
+        const auto ns = ns_per_cell_.find(column.name + "/" + row);
+        const auto base = ns_per_cell_.find(column.baseline(row));
         if (ns == ns_per_cell_.end())
           std::printf(" %18s %7s", "", "");
         else if (base == ns_per_cell_.end())

@@ -190,3 +190,25 @@ TEST_CASE("a state inside the domain whose Re overflows: no assertion in the hot
   CHECK_THROWS_WITH_AS(ML{}.checked(state), doctest::Contains("is not finite for state {voidage = 0.5"),
                        std::domain_error);
 }
+
+TEST_CASE("with_derivatives equals the chain rule through eq. 3.65 with Re* as a dual number (seed eq. 3.105)") {
+  // An independent route to the same derivatives: β = ¾ μ_f (1 − ε)/d² (0.63 √Re* + 4.8)² ε^(1 − n_e(Re*))
+  // with Re* and n_e(Re*) dual numbers (effective_reynolds: a Newton step in Dual from the root),
+  // against with_derivatives' closed form of the implicit-function theorem, over Re 1e-9 … 1e7.
+  using D = Dual<double, 2>;
+  for (double eps : {0.36, 0.5, 0.7, 0.9, 0.999})
+    for (double re = 1e-9; re < 2e7; re *= 7.3) {
+      const double d = 1e-3, w = re * water.viscosity / (water.density * eps * d);
+      const D voidage = D::variable(eps, 0), slip = D::variable(w, 1);
+      const D re_dual = particle_reynolds(water, d, voidage, slip);
+      const D re_star = ML::effective_reynolds(voidage, re_dual);
+      const D root = 0.63 * sqrt(re_star) + 4.8;
+      const D beta = 0.75 * water.viscosity / (d * d) * (1 - voidage) * root * root *
+                     pow(voidage, 1 - settling::MazzeiExponent{}.exponent(re_star));
+      const DragDerivatives<double> r = ML{}.with_derivatives(DragState<double>{eps, w, water, d}).classical();
+      INFO("eps=" << eps << " Re=" << re);
+      CHECK(r.value == doctest::Approx(beta.value).epsilon(1e-13));
+      CHECK(r.d_voidage == doctest::Approx(beta.derivative[0]).epsilon(1e-12).scale(beta.value / eps));
+      CHECK(r.d_slip == doctest::Approx(beta.derivative[1]).epsilon(1e-12).scale(beta.value / w));
+    }
+}

@@ -18,12 +18,23 @@
 #include <cmath>
 #include <compare>
 #include <concepts>
+#include <limits>
 #include <numbers>
 #include <type_traits>
 #include <utility>
 
 #include "config.hpp"
 #include "constants.hpp"
+
+// Dual's operations are a few instructions each around what the plain arithmetic does: always
+// inlined, as that arithmetic is. Left to its heuristics GCC calls operator* and sqrt out of
+// line, passing the 24-byte Dual<double, 2> through memory, and a law with derivatives then
+// costs 4 times its value instead of 2.
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__) && !defined(__HIPCC__)
+#define FLUIDBED_DUAL_INLINE [[gnu::always_inline]] inline
+#else
+#define FLUIDBED_DUAL_INLINE inline
+#endif
 
 namespace fluidbed {
 
@@ -33,10 +44,10 @@ struct Dual {
   T derivative[N]{};
 
   constexpr Dual() = default;
-  FLUIDBED_HOST_DEVICE constexpr Dual(const T& constant) : value(constant) {}  // NOLINT: constants mix freely
+  FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual(const T& constant) : value(constant) {}  // NOLINT: constants mix freely
 
   // The independent variable number `index` (0-based) at `at`.
-  FLUIDBED_HOST_DEVICE static constexpr Dual variable(const T& at, int index) {
+  FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE static constexpr Dual variable(const T& at, int index) {
     Dual x(at);
     x.derivative[index] = T(1);
     return x;
@@ -50,9 +61,9 @@ struct is_dual<Dual<T, N>> : std::true_type {};
 
 // The plain value of a scalar or a dual number.
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr const T& value_of(const T& x) { return x; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr const T& value_of(const T& x) { return x; }
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr const T& value_of(const Dual<T, N>& x) { return x.value; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr const T& value_of(const Dual<T, N>& x) { return x.value; }
 
 // The plain floating type of a scalar or a dual number.
 template <class S>
@@ -82,7 +93,7 @@ using value_type_of = std::remove_cvref_t<decltype(value_of(std::declval<const S
 // (a law's named switch point: a static member function template returning it); constant_as
 // converts a dyadic or integer one given as a number.
 template <class S>
-FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(long double constant) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr value_type_of<S> constant_as(long double constant) {
   return value_type_of<S>(constant);
 }
 
@@ -90,13 +101,13 @@ namespace detail {
 
 // a·b with the convention 0·anything = 0 (see the header comment).
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr T times(const T& a, const T& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr T times(const T& a, const T& b) {
   return (a == T(0) || b == T(0)) ? T(0) : a * b;
 }
 
 // Chain rule for a unary function: value f, local slope f'(x).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain(const T& f, const T& slope, const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain(const T& f, const T& slope, const Dual<T, N>& x) {
   Dual<T, N> r(f);
   for (int i = 0; i < N; ++i) r.derivative[i] = times(slope, x.derivative[i]);
   return r;
@@ -104,34 +115,41 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain(const T& f, const T& slope, cons
 
 }  // namespace detail
 
+// f(x) for a function whose value f and slope f'(x) the caller has formed already (a closure
+// that reuses the pieces of its value, or solves an implicit relation in T).
+template <class T, int N>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain_rule(const T& f, const T& slope, const Dual<T, N>& x) {
+  return detail::chain(f, slope, x);
+}
+
 // A plain constant that may be mixed with Dual<T, N> (a literal, or T itself).
 template <class U, class T>
 concept ConstantFor = std::is_arithmetic_v<U> || std::same_as<U, T>;
 
 // ----------------------------------------------------------------------------- arithmetic
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& x) {
   Dual<T, N> r(-x.value);
   for (int i = 0; i < N; ++i) r.derivative[i] = -x.derivative[i];
   return r;
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, const Dual<T, N>& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, const Dual<T, N>& b) {
   Dual<T, N> r(a.value + b.value);
   for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] + b.derivative[i];
   return r;
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, const Dual<T, N>& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, const Dual<T, N>& b) {
   Dual<T, N> r(a.value - b.value);
   for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] - b.derivative[i];
   return r;
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const Dual<T, N>& b) {
   Dual<T, N> r(a.value * b.value);
   for (int i = 0; i < N; ++i)
     r.derivative[i] = detail::times(a.derivative[i], b.value) + detail::times(a.value, b.derivative[i]);
@@ -139,36 +157,67 @@ FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, const D
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, const Dual<T, N>& b) {
   const T q = a.value / b.value;
+  const T inverse = T(1) / b.value;  // a division per operand, not per derivative
   Dual<T, N> r(q);
-  for (int i = 0; i < N; ++i)
-    r.derivative[i] = (a.derivative[i] - detail::times(q, b.derivative[i])) / b.value;
+  for (int i = 0; i < N; ++i) r.derivative[i] = (a.derivative[i] - detail::times(q, b.derivative[i])) * inverse;
   return r;
 }
 
+// With a constant operand: the products and quotients with its zero derivatives are not
+// formed (the same results, to the sign of a zero derivative).
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, U c) { return a + Dual<T, N>(T(c)); }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(a);
+  r.value = a.value + T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) + a; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator+(U c, const Dual<T, N>& a) {
+  Dual<T, N> r(a);
+  r.value = T(c) + a.value;
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, U c) { return a - Dual<T, N>(T(c)); }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(a);
+  r.value = a.value - T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) - a; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator-(U c, const Dual<T, N>& a) {
+  Dual<T, N> r = -a;
+  r.value = T(c) - a.value;
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, U c) { return a * Dual<T, N>(T(c)); }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(const Dual<T, N>& a, U c) {
+  return detail::chain(T(a.value * T(c)), T(c), a);
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) * a; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator*(U c, const Dual<T, N>& a) {
+  return detail::chain(T(T(c) * a.value), T(c), a);
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) { return a / Dual<T, N>(T(c)); }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(const Dual<T, N>& a, U c) {
+  Dual<T, N> r(T(a.value / T(c)));
+  for (int i = 0; i < N; ++i) r.derivative[i] = a.derivative[i] / T(c);
+  return r;
+}
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) { return Dual<T, N>(T(c)) / a; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> operator/(U c, const Dual<T, N>& a) {
+  const T q = T(c) / a.value;
+  Dual<T, N> r(q);
+  for (int i = 0; i < N; ++i) r.derivative[i] = -detail::times(q, a.derivative[i]) / a.value;
+  return r;
+}
 
 namespace detail {
 
 // a <=> b, also for a T without operator<=> (Boost.Multiprecision 1.74 has only < and ==).
 template <class T>
-FLUIDBED_HOST_DEVICE constexpr auto three_way(const T& a, const T& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr auto three_way(const T& a, const T& b) {
   if constexpr (std::three_way_comparable<T>)
     return a <=> b;
   else
@@ -182,65 +231,88 @@ FLUIDBED_HOST_DEVICE constexpr auto three_way(const T& a, const T& b) {
 
 // Comparisons look at the value only (branches of piecewise closures).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<T, N>& b) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, const Dual<T, N>& b) {
   return detail::three_way(a.value, b.value);
 }
 template <class T, int N>
-FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value == b.value; }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, const Dual<T, N>& b) { return a.value == b.value; }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, U c) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr auto operator<=>(const Dual<T, N>& a, U c) {
   return detail::three_way(a.value, T(c));
 }
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, U c) { return a.value == T(c); }
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr bool operator==(const Dual<T, N>& a, U c) { return a.value == T(c); }
 
 // ----------------------------------------------------------------------------- functions
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> sqrt(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> sqrt(const Dual<T, N>& x) {
   using std::sqrt;
   const T f = sqrt(x.value);
   return detail::chain(f, T(1) / (T(2) * f), x);
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> cbrt(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> cbrt(const Dual<T, N>& x) {
   using std::cbrt;
   const T f = cbrt(x.value);
   return detail::chain(f, T(1) / (T(3) * f * f), x);
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> exp(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> exp(const Dual<T, N>& x) {
   using std::exp;
   const T f = exp(x.value);
   return detail::chain(f, f, x);
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> log(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> log(const Dual<T, N>& x) {
   using std::log;
   return detail::chain(T(log(x.value)), T(1) / x.value, x);
 }
 
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
   using std::atan;
   return detail::chain(T(atan(x.value)), T(1) / (T(1) + x.value * x.value), x);
 }
 
-// x^p for a constant exponent. The slope p·x^(p-1) is formed directly (never
-// x^p·p/x), so x = 0 gives the right 0 or ∞.
+namespace detail {
+
+// x is a normal number (finite, nonzero, not subnormal), written with comparisons: nvcc's
+// std::isnormal is false in device code.
+template <class T>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr bool is_normal(const T& x) {
+  using std::abs;
+  const T magnitude = abs(x);
+  return magnitude >= std::numeric_limits<T>::min() && magnitude <= std::numeric_limits<T>::max();
+}
+
+// p·x^(p−1) given f = x^p: p·f/x, one pow fewer than forming x^(p−1), where that is exact to
+// rounding (f and the quotient normal numbers); else formed directly, so that x = 0 gives the
+// right 0 or ∞ and an f or a slope beyond the normal range loses no digits.
+template <class T>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE T power_slope(const T& x, const T& exponent, const T& f) {
+  using std::pow;
+  if (exponent == T(0)) return T(0);
+  const T slope = exponent * (f / x);
+  return is_normal(f) && is_normal(slope) ? slope : T(exponent * T(pow(x, exponent - T(1))));
+}
+
+}  // namespace detail
+
+// x^p for a constant exponent.
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, U p) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, U p) {
   using std::pow;
   const T exponent(p);
-  const T slope = exponent == T(0) ? T(0) : exponent * T(pow(x.value, exponent - T(1)));
-  return detail::chain(T(pow(x.value, exponent)), slope, x);
+  const T f = pow(x.value, exponent);
+  return detail::chain(f, detail::power_slope(x.value, exponent, f), x);
 }
 
 // a^y for a constant base a > 0 (or a = 0 with y > 0).
 template <class T, int N, ConstantFor<T> U>
-FLUIDBED_HOST_DEVICE Dual<T, N> pow(U a, const Dual<T, N>& y) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> pow(U a, const Dual<T, N>& y) {
   using std::log;
   using std::pow;
   const T base(a);
@@ -250,11 +322,11 @@ FLUIDBED_HOST_DEVICE Dual<T, N> pow(U a, const Dual<T, N>& y) {
 
 // x^y with both varying; ∂/∂y uses x^y·ln x, whose limit at x = 0 (y > 0) is 0.
 template <class T, int N>
-FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const Dual<T, N>& y) {
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> pow(const Dual<T, N>& x, const Dual<T, N>& y) {
   using std::log;
   using std::pow;
   const T f = pow(x.value, y.value);
-  const T slope_x = y.value == T(0) ? T(0) : y.value * T(pow(x.value, y.value - T(1)));
+  const T slope_x = detail::power_slope(x.value, y.value, f);
   const T slope_y = x.value > T(0) ? T(f * log(x.value)) : T(0);
   Dual<T, N> r(f);
   for (int i = 0; i < N; ++i)

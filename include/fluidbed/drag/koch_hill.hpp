@@ -87,8 +87,7 @@ struct KochHill : DragLaw<KochHill> {
   // F0(φ): zero-Re intercept of the low-Re branch (defined for φ > 0).
   template <class S>
   FLUIDBED_HOST_DEVICE static S f0(const S& phi) {
-    using T = value_type_of<S>;
-    return blended_rational(phi, FLUIDBED_DECIMAL(T, 17.14), FLUIDBED_DECIMAL(T, -8.48), FLUIDBED_DECIMAL(T, 8.16));
+    return intercepts(phi).low;
   }
 
   // F1(φ): coefficient of Re_h² of the low-Re branch (defined for φ > 0).
@@ -104,8 +103,7 @@ struct KochHill : DragLaw<KochHill> {
   // F2(φ): zero-Re intercept of the high-Re linear branch (defined for φ >= 0).
   template <class S>
   FLUIDBED_HOST_DEVICE static S f2(const S& phi) {
-    using T = value_type_of<S>;
-    return blended_rational(phi, FLUIDBED_DECIMAL(T, 17.89), FLUIDBED_DECIMAL(T, -11.03), FLUIDBED_DECIMAL(T, 15.41));
+    return intercepts(phi).high;
   }
 
   // F3(φ): slope in Re_h of the high-Re linear branch.
@@ -121,22 +119,24 @@ struct KochHill : DragLaw<KochHill> {
   // Re_h where the branches meet: Re_T (φ > 0.01) or Re_T1 (φ ≤ 0.01).
   template <class S>
   FLUIDBED_HOST_DEVICE static S transition_reynolds(const S& phi) {
-    using std::sqrt;
     using T = value_type_of<S>;
-    if (phi <= dilute_solid_fraction<T>()) return (f2(phi) - 1) / (T(0.375) - f3(phi));
-    const S a = f1(phi);
-    const S b = f3(phi);
-    return (b + sqrt(b * b - 4 * a * (f0(phi) - f2(phi)))) / (2 * a);
+    const Intercepts<S> f = intercepts(phi);
+    if (phi <= dilute_solid_fraction<T>()) return dilute_transition(f.high, f3(phi));
+    return dense_transition(f.low, f1(phi), f.high, f3(phi));
   }
 
-  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside).
+  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside). Each F_i once.
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using T = value_type_of<S>;
     const S re_h = T(0.5) * re;
-    if (re_h > transition_reynolds(phi)) return f2(phi) + f3(phi) * re_h;
-    if (phi <= dilute_solid_fraction<T>()) return 1 + T(0.375) * re_h;
-    return f0(phi) + f1(phi) * (re_h * re_h);
+    const Intercepts<S> f = intercepts(phi);
+    const S high_slope = f3(phi);
+    if (phi <= dilute_solid_fraction<T>())
+      return re_h > dilute_transition(f.high, high_slope) ? f.high + high_slope * re_h : 1 + T(0.375) * re_h;
+    const S low_curvature = f1(phi);
+    if (re_h > dense_transition(f.low, low_curvature, f.high, high_slope)) return f.high + high_slope * re_h;
+    return f.low + low_curvature * (re_h * re_h);
   }
 
   template <class S, class T>
@@ -146,22 +146,53 @@ struct KochHill : DragLaw<KochHill> {
   }
 
  private:
-  // (1 − w_b) R(a, b, c) + w_b 10φ/ε³ for φ < 0.4, 10φ/ε³ above. At φ = 0 it is 1: the
-  // φ ln φ term and w_b take their limits (0), so nothing evaluates 0·∞.
+  // Re_T1 = (F2 − 1)/(0.375 − F3), where 1 + 0.375 Re_h meets the high-Re line (φ ≤ 0.01).
   template <class S>
-  FLUIDBED_HOST_DEVICE static S blended_rational(const S& phi, const value_type_of<S>& a, const value_type_of<S>& b,
-                                                 const value_type_of<S>& c) {
+  FLUIDBED_HOST_DEVICE static S dilute_transition(const S& f2, const S& f3) {
+    using T = value_type_of<S>;
+    return (f2 - 1) / (T(0.375) - f3);
+  }
+
+  // Re_T, the larger root of F0 + F1 Re_h² = F2 + F3 Re_h (φ > 0.01).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S dense_transition(const S& f0, const S& f1, const S& f2, const S& f3) {
+    using std::sqrt;
+    return (f3 + sqrt(f3 * f3 - 4 * f1 * (f0 - f2))) / (2 * f1);
+  }
+
+  template <class S>
+  struct Intercepts {
+    S low, high;  // F0, F2
+  };
+
+  // F0 and F2, each (1 − w_b) R(a, b, c) + w_b 10φ/ε³ for φ < 0.4 with its own (a, b, c), and
+  // 10φ/ε³ above: one w_b, 10φ/ε³ and numerator but for its aφ for both. At φ = 0 they are 1:
+  // the φ ln φ term and w_b take their limits (0), so nothing evaluates 0·∞.
+  template <class S>
+  FLUIDBED_HOST_DEVICE static Intercepts<S> intercepts(const S& phi) {
     using std::exp;
     using std::log;
     using std::sqrt;
     using T = value_type_of<S>;
     const S eps = 1 - phi;
     const S carman = 10 * phi / (eps * eps * eps);
-    if (phi >= dense_solid_fraction<T>()) return carman;
-    if (!(phi > 0)) return S(1);
+    if (phi >= dense_solid_fraction<T>()) return {carman, carman};
+    if (!(phi > 0)) return {S(1), S(1)};
     const S weight = exp(-10 * (dense_solid_fraction<T>() - phi) / phi);
-    const S rational = (1 + 3 * sqrt(T(0.5) * phi) + T(135) / 64 * phi * log(phi) + a * phi) /
-                       (1 + phi * (FLUIDBED_DECIMAL(T, 0.681) + phi * (b + c * phi)));
+    const S numerator = 1 + 3 * sqrt(T(0.5) * phi) + T(135) / 64 * phi * log(phi);  // R's, but for a φ
+    return {blend(phi, weight, carman, numerator, FLUIDBED_DECIMAL(T, 17.14), FLUIDBED_DECIMAL(T, -8.48),
+                  FLUIDBED_DECIMAL(T, 8.16)),
+            blend(phi, weight, carman, numerator, FLUIDBED_DECIMAL(T, 17.89), FLUIDBED_DECIMAL(T, -11.03),
+                  FLUIDBED_DECIMAL(T, 15.41))};
+  }
+
+  // (1 − w_b) R(a, b, c) + w_b 10φ/ε³, R = (numerator + a φ)/(1 + φ (0.681 + φ (b + c φ))).
+  template <class S>
+  FLUIDBED_HOST_DEVICE static S blend(const S& phi, const S& weight, const S& carman, const S& numerator,
+                                      const value_type_of<S>& a, const value_type_of<S>& b,
+                                      const value_type_of<S>& c) {
+    using T = value_type_of<S>;
+    const S rational = (numerator + a * phi) / (1 + phi * (FLUIDBED_DECIMAL(T, 0.681) + phi * (b + c * phi)));
     return (1 - weight) * rational + weight * carman;
   }
 };

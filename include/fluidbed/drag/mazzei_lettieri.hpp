@@ -150,26 +150,54 @@ struct MazzeiLettieri : DragLaw<MazzeiLettieri> {
                T(2) * log(FLUIDBED_DECIMAL(T, 0.63) * state.root_reynolds + FLUIDBED_DECIMAL(T, 4.8) / e));
   }
 
+  // ∂β/∂ε and ∂β/∂w of a solved state, through the first-order variations (dual numbers of value
+  // 0) of ln ε and ln Re: no second solve and no transcendental function. Writing
+  // β = P (1 − ε) Q, P = ¾ μ_f/d², Q = ε^(1 − n) (0.63 √Re* + 4.8)², x = ln Re*, L = ln ε,
+  // p = 1 + y (y = 0.175 Re*^¾, dn/dx = −1.8 y/p²), s = √Re*, R = 0.63 s + 4.8:
+  //   δx     = (δ ln Re − n δL)/g',   g' = 1 − 1.8 L y/p²   implicit function theorem on g(x) = 0
+  //   δ ln Q = (1 − n) δL + (0.63 s/R + 1.8 L y/p²) δx = (1 − n − k n) δL + k δ ln Re,
+  //   k = (0.63 s p² + 1.8 L y R)/((p² − 1.8 L y) R):
+  // one division on the path, and no 1 − r or 1 − 4.8/R that would lose ∂β/∂w's digits where
+  // Re* → 0. y is held below 2^(max_exponent/5), so that p² s stays finite: beyond, the term
+  // 1.8 L y/p² ≈ 1.8 L/y it stands for is below the rounding of c ≈ 1 (in double for every ε).
+  template <class S, class T>
+  FLUIDBED_HOST_DEVICE static S beta_with_derivatives(const SolvedState<T>& state, const T& beta, const S& voidage,
+                                                      const S& re, const T& prefactor) {
+    const T e = value_of(voidage);
+    using std::ldexp;
+    const T y_cap = ldexp(T(1), std::numeric_limits<T>::max_exponent / 5);
+    const T y = state.scaled_power < y_cap ? state.scaled_power : y_cap;
+    const T p2 = (T(1) + y) * (T(1) + y);
+    const T y_slope = FLUIDBED_DECIMAL(T, 1.8) * state.log_voidage * y;  // 1.8 L y
+    const T root_star = state.root_reynolds * state.inverse_root_power;  // √Re*
+    const T root = FLUIDBED_DECIMAL(T, 0.63) * root_star + FLUIDBED_DECIMAL(T, 4.8);
+    const T k = (FLUIDBED_DECIMAL(T, 0.63) * root_star * p2 + y_slope * root) / ((p2 - y_slope) * root);
+    const S d_log_q = chain_rule(T(0), (T(1) - state.exponent - k * state.exponent) * (T(1) / e), voidage) +
+                      chain_rule(T(0), k * (T(1) / value_of(re)), re);
+    const T q = e * root * root * (state.inverse_root_power * state.inverse_root_power);
+    S result = prefactor * (1 - voidage) * chain_rule(q, q, d_log_q);
+    result.value = beta;  // the hot path's value, bit for bit
+    return result;
+  }
+
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& slip, const Fluid<T>& fluid, const T& diameter) const {
-    using std::exp;
     using std::pow;
     const S re = particle_reynolds(fluid, diameter, voidage, slip);
     const T prefactor = T(0.75) * fluid.viscosity / (diameter * diameter);
-    if constexpr (std::is_same_v<S, T>) {
-      if (re > T(0)) {
-        return beta_of_state(solve_state(re, voidage), voidage, fluid, diameter);
-      }
+    if (value_of(re) > T(0)) {
+      const SolvedState<T> state = solve_state(value_of(re), value_of(voidage));
+      const T beta = beta_of_state(state, value_of(voidage), fluid, diameter);
+      if constexpr (std::is_same_v<S, T>)
+        return beta;
+      else
+        return beta_with_derivatives(state, beta, voidage, re, prefactor);
     }
-    const S re_star = effective_reynolds(voidage, re);
-    // At Re = 0 exactly, n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
+    // Re = 0: Re* = Re ε^−4.8, and n_e is held at its limit 4.8: both √Re* and n_e(Re*) have
     // infinite slopes there, and the √Re* one dominates (∂β/∂w = +∞, not ∞ − ∞).
-    const S exponent = value_of(re) > 0 ? settling::MazzeiExponent{}.exponent(re_star) : S(FLUIDBED_DECIMAL(T, 4.8));
-    S beta = prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
-             pow(voidage, 1 - exponent);
-    if constexpr (is_dual<S>::value)  // report the hot path's value, bit for bit
-      if (value_of(re) > 0) beta.value = native_beta(value_of(voidage), value_of(slip), fluid, diameter);
-    return beta;
+    const S re_star = effective_reynolds(voidage, re);
+    return prefactor * (1 - voidage) * single_particle::DallavalleCoefficient::cd_times_re(re_star) *
+           pow(voidage, 1 - FLUIDBED_DECIMAL(T, 4.8));
   }
 };
 

@@ -370,12 +370,15 @@ struct TerminalReynoldsSolution {
 //   g   = x + 2.4 L − ln Re + 2.4 L r
 //   g'  = 1 − 1.8 L y r²                 = 1 − 1.8 L r (1 − r)          (≥ 1: the root is unique)
 //   g'' = −1.35 L y (1 − y) r³           = −1.35 L r (1 − r)(2r − 1)
-// and the Halley step 2 g g'/(2 g'² − g g''): one exp and two divisions per step, no pow.
-// Written in r ∈ [0, 1], every term is bounded by a multiple of |L| and of the distance to
-// the root, whatever Re and ε: written in p = 1 + y (g = G/p, S₁ = p² g', S₂ = p³ g''), it squares
-// S₁ ≈ y², which overflows once ln Re_t >~ 239 (double) or 32 (float) and turns the step
-// into ∞/∞. Here y may overflow to +∞ (Re_t beyond the range of T) and r is then 0: n = 2.4
-// exactly and g is linear.
+// and the Halley step 2 g g'/(2 g'² − g g''), formed in p = 1 + y as
+//   2 G S₁ p/(2 S₁² − G S₂),  G = p g = (x + 2.4 L − ln Re) p + 2.4 L,
+//   S₁ = p² g' = p² − 1.8 L y,  S₂ = p³ g'' = −1.35 L y (1 − y):
+// one exp and one division per step (in r, r and the step are two divisions in series, the
+// longest part of the step's latency), no pow. S₁² ~ y⁴ would overflow once ln Re_t >~ 239
+// (double) or 32 (float) and turn the step into ∞/∞: y is held below 2^(max_exponent/5),
+// where n = 2.4 + 2.4 r is 2.4 to rounding and g linear, so the held step is the step (in double the
+// term 2.4 L r < 1e-58 for every ε; in float it reaches the rounding of x only for ε <~ 1e-6).
+// y itself may overflow to +∞ (Re_t beyond the range of T).
 // Safeguard. For |L| >~ 20 (ε <~ 1e-9) n(eˣ) is a step of height 2.4 |L| a few units of x
 // wide, and Halley's (or Newton's) iteration can cycle across it. g is increasing, so the
 // iteration keeps a bracket [low, high] of the root (g(low) <= 0 <= g(high)) and bisects
@@ -392,6 +395,7 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
   using std::abs;
   using std::cbrt;
   using std::exp;
+  using std::ldexp;
   using std::log;
   const T log_voidage = log(voidage);
   const T log_re = log(reynolds);
@@ -402,15 +406,16 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
   T high = log_re - FLUIDBED_DECIMAL(T, 4.8) * log_voidage + 1;
   T x = log_re - FLUIDBED_DECIMAL(T, 3.6) * log_voidage;
   T previous = high - low;  // the size of the last step taken
+  const T y_cap = ldexp(T(1), std::numeric_limits<T>::max_exponent / 5);
   T y{};
   for (int iteration = 0; iteration < 100; ++iteration) {
     y = FLUIDBED_DECIMAL(T, 0.175) * exp(T(0.75) * x);
-    const T r = T(1) / (T(1) + y);
-    const T r_q = r * (T(1) - r);  // y r² = y/(1 + y)², from r so that y = ∞ gives 0
-    const T g = x + FLUIDBED_DECIMAL(T, 2.4) * log_voidage - log_re + FLUIDBED_DECIMAL(T, 2.4) * log_voidage * r;
-    const T d1 = T(1) - FLUIDBED_DECIMAL(T, 1.8) * log_voidage * r_q;
-    const T d2 = FLUIDBED_DECIMAL(T, -1.35) * log_voidage * r_q * (T(2) * r - T(1));
-    const T step = T(2) * g * d1 / (T(2) * d1 * d1 - g * d2);
+    const T y_held = y < y_cap ? y : y_cap;
+    const T p = T(1) + y_held;
+    const T g_p = (x + FLUIDBED_DECIMAL(T, 2.4) * log_voidage - log_re) * p + FLUIDBED_DECIMAL(T, 2.4) * log_voidage;
+    const T d1_p2 = p * p - FLUIDBED_DECIMAL(T, 1.8) * log_voidage * y_held;
+    const T d2_p3 = FLUIDBED_DECIMAL(T, -1.35) * log_voidage * y_held * (T(1) - y_held);
+    const T step = T(2) * g_p * d1_p2 * p / (T(2) * d1_p2 * d1_p2 - g_p * d2_p3);
     if (abs(step) <= stop) {
       x -= step;
       const T z = T(0.75) * step;
@@ -418,7 +423,7 @@ FLUIDBED_HOST_DEVICE TerminalReynoldsSolution<T> solve_richardson_zaki_terminal_
       break;
     }
     // A step this large starts far enough from the root for the sign of g to be exact.
-    (g < T(0) ? low : high) = x;
+    (g_p < T(0) ? low : high) = x;
     const T next = x - step;
     const T taken = next > low && next < high && abs(step) <= T(0.5) * previous ? next : T(0.5) * (low + high);
     previous = abs(x - taken);
