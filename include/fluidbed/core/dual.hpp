@@ -122,6 +122,29 @@ FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> chain_rule(const 
   return detail::chain(f, slope, x);
 }
 
+// A sub-expression of one input at the cost of one derivative. In a closure of several inputs,
+// what depends on x alone can be formed on single_variable(x), a Dual<T, 1> in x, and brought
+// back by of_single_variable(y, x): the same value and, by the chain rule, the same N
+// derivatives (to rounding) as forming it on x itself, with 1/N of the derivative arithmetic. On
+// a plain T both are the identity.
+template <class T>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr const T& single_variable(const T& x) {
+  return x;
+}
+template <class T, int N>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, 1> single_variable(const Dual<T, N>& x) {
+  return Dual<T, 1>::variable(x.value, 0);
+}
+template <class T>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr const T& of_single_variable(const T& y, const T& /*x*/) {
+  return y;
+}
+template <class T, int N>
+FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr Dual<T, N> of_single_variable(const Dual<T, 1>& y,
+                                                                                   const Dual<T, N>& x) {
+  return chain_rule(y.value, y.derivative[0], x);
+}
+
 // A plain constant that may be mixed with Dual<T, N> (a literal, or T itself).
 template <class U, class T>
 concept ConstantFor = std::is_arithmetic_v<U> || std::same_as<U, T>;

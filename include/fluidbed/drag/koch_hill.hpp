@@ -125,18 +125,26 @@ struct KochHill : DragLaw<KochHill> {
     return dense_transition(f.low, f1(phi), f.high, f3(phi));
   }
 
-  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside). Each F_i once.
+  // F(φ, Re), total-force normalisation; Re = ρ_f ε w d / μ_f (halved inside). Each F_i once,
+  // formed with one derivative (single_variable, core/dual.hpp); the transition, which only
+  // chooses the branch, without any.
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using T = value_type_of<S>;
     const S re_h = T(0.5) * re;
-    const Intercepts<S> f = intercepts(phi);
-    const S high_slope = f3(phi);
-    if (phi <= dilute_solid_fraction<T>())
-      return re_h > dilute_transition(f.high, high_slope) ? f.high + high_slope * re_h : 1 + T(0.375) * re_h;
-    const S low_curvature = f1(phi);
-    if (re_h > dense_transition(f.low, low_curvature, f.high, high_slope)) return f.high + high_slope * re_h;
-    return f.low + low_curvature * (re_h * re_h);
+    const auto x = single_variable(phi);
+    const auto f = intercepts(x);
+    const auto high_slope = f3(x);
+    if (phi <= dilute_solid_fraction<T>()) {
+      if (value_of(re_h) > dilute_transition(value_of(f.high), value_of(high_slope)))
+        return of_single_variable(f.high, phi) + of_single_variable(high_slope, phi) * re_h;
+      return 1 + T(0.375) * re_h;
+    }
+    const auto low_curvature = f1(x);
+    if (value_of(re_h) >
+        dense_transition(value_of(f.low), value_of(low_curvature), value_of(f.high), value_of(high_slope)))
+      return of_single_variable(f.high, phi) + of_single_variable(high_slope, phi) * re_h;
+    return of_single_variable(f.low, phi) + of_single_variable(low_curvature, phi) * (re_h * re_h);
   }
 
   template <class S, class T>

@@ -47,15 +47,18 @@ struct Tang : DragLaw<Tang> {
   constexpr ValidityRange validity() const { return {0.4, 0.9, 0.0, fitted_reynolds_max}; }
 
   // F(φ, Re) with the extension above, drag-only normalisation.
+  // The coefficients of φ alone are formed with one derivative (single_variable, core/dual.hpp).
   template <class S>
   FLUIDBED_HOST_DEVICE static S dimensionless_force(const S& phi, const S& re) {
     using std::pow;
     using T = value_type_of<S>;
-    const S eps = 1 - phi;
-    const S eps4 = (eps * eps) * (eps * eps);
-    const S linear = FLUIDBED_DECIMAL(T, 0.11) * phi * (1 + phi) - FLUIDBED_DECIMAL(T, 0.00456) / eps4;
-    const S power = FLUIDBED_DECIMAL(T, 0.169) * eps + FLUIDBED_DECIMAL(T, 0.0644) / eps4;
-    const S stokes = detail::van_der_hoef_stokes_force(phi);
+    const auto x = single_variable(phi);
+    const auto eps = 1 - x;
+    const auto eps4 = (eps * eps) * (eps * eps);
+    const S linear =
+        of_single_variable(FLUIDBED_DECIMAL(T, 0.11) * x * (1 + x) - FLUIDBED_DECIMAL(T, 0.00456) / eps4, phi);
+    const S power = of_single_variable(FLUIDBED_DECIMAL(T, 0.169) * eps + FLUIDBED_DECIMAL(T, 0.0644) / eps4, phi);
+    const S stokes = of_single_variable(detail::van_der_hoef_stokes_force(x), phi);
     if (re <= constant_as<S>(fitted_reynolds_max))
       return stokes + linear * re + power * pow(re, FLUIDBED_DECIMAL(T, 0.657));
     return stokes + (linear + power * pow(T(fitted_reynolds_max), FLUIDBED_DECIMAL(T, 0.657) - 1)) * re;

@@ -57,8 +57,9 @@ struct VanDerHoef : DragLaw<VanDerHoef> {
   template <class S, class T>
   FLUIDBED_HOST_DEVICE S native_beta(const S& voidage, const S& /*slip*/, const Fluid<T>& fluid,
                                      const T& diameter) const {
-    return beta_from_drag_force(detail::van_der_hoef_stokes_force(S(1 - voidage)), voidage, fluid.viscosity,
-                                diameter);
+    const S phi = 1 - voidage;  // F0(φ) formed with one derivative (single_variable, core/dual.hpp)
+    return beta_from_drag_force(of_single_variable(detail::van_der_hoef_stokes_force(single_variable(phi)), phi),
+                                voidage, fluid.viscosity, diameter);
   }
 };
 
