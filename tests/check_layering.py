@@ -35,7 +35,7 @@ DETAIL_CALL = re.compile(r"\b(\w+)::detail::")
 THROWING = re.compile(r"\bthrow\b|#\s*include\s*<stdexcept>")
 THROWING_HEADER = Path("core") / "errors.hpp"
 # Standard functions nvcc compiles wrongly in device code without a diagnostic: std::isnormal is
-# constant false there (moments/recurrence.hpp has detail::is_normal instead).
+# constant false there (core/config.hpp has fluidbed::detail::is_normal instead).
 DEVICE_UNSAFE = re.compile(r"\bisnormal\b")
 
 
@@ -71,7 +71,7 @@ def main():
                             f"only {THROWING_HEADER.as_posix()} may (the checked paths call its helpers)")
         if DEVICE_UNSAFE.search(code):
             problems.append(f"{header.relative_to(root)} uses isnormal, which nvcc makes false in device code: "
-                            "use moments::detail::is_normal")
+                            "use fluidbed::detail::is_normal (core/config.hpp)")
         if unit != "umbrellas":
             for namespace in set(DETAIL_CALL.findall(code)):
                 if namespace not in ("fluidbed", "numbers", unit):  # fluidbed::numbers is core's too

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 // C++20 is required (concepts, std::span, designated initializers, std::remove_cvref_t, …): say
 // so first, instead of hundreds of errors from the first C++20 construct. MSVC reports its
@@ -42,3 +44,17 @@
 #else
 #define FLUIDBED_EXPECTS(condition) assert(condition)
 #endif
+
+namespace fluidbed::detail {
+
+// Whether x is a normal floating-point number (not 0, subnormal, ±∞ or NaN), written with
+// comparisons. Not std::isnormal: nvcc compiles std::isnormal in device code to `false`, without
+// a diagnostic (seen on an H100: every device inversion reported invalid_input).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr bool is_normal(const T& x) {
+  using std::abs;
+  const T magnitude = abs(x);
+  return magnitude >= std::numeric_limits<T>::min() && magnitude <= std::numeric_limits<T>::max();
+}
+
+}  // namespace fluidbed::detail

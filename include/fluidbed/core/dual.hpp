@@ -302,15 +302,6 @@ FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE Dual<T, N> atan(const Dual<T, N>& x) {
 
 namespace detail {
 
-// x is a normal number (finite, nonzero, not subnormal), written with comparisons: nvcc's
-// std::isnormal is false in device code.
-template <class T>
-FLUIDBED_DUAL_INLINE FLUIDBED_HOST_DEVICE constexpr bool is_normal(const T& x) {
-  using std::abs;
-  const T magnitude = abs(x);
-  return magnitude >= std::numeric_limits<T>::min() && magnitude <= std::numeric_limits<T>::max();
-}
-
 // p·x^(p−1) given f = x^p: p·f/x, one pow fewer than forming x^(p−1), where that is exact to
 // rounding (f and the quotient normal numbers); else formed directly, so that x = 0 gives the
 // right 0 or ∞ and an f or a slope beyond the normal range loses no digits.

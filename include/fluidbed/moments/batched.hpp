@@ -351,6 +351,22 @@ void store_rule(const QuadratureBatch<T, N>& out, std::size_t c, const Quadratur
   }
 }
 
+// The 2N moments of cell c, gathered from the batch's columns.
+template <class T, int N>
+std::array<T, 2 * N> cell_moments(const MomentBatch<T, N>& in, std::size_t c) {
+  std::array<T, 2 * N> cell;
+  for (int k = 0; k < 2 * N; ++k) cell[k] = in.moments[k][c];
+  return cell;
+}
+
+// Cell c inverted by invert() alone, its rule and status stored.
+template <Support support, class T, int N>
+void invert_cell_alone(const MomentBatch<T, N>& in, std::size_t c, const QuadratureBatch<T, N>& out) {
+  const std::array<T, 2 * N> cell = cell_moments(in, c);
+  const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell), {.support = support});
+  store_rule(out, c, result.quadrature, result.status);
+}
+
 // Cells the lanes did not validate whose rule invert() reduces to 4 … N − 1 nodes (sets that
 // rounding left unrealizable beyond them: a quarter of random 8-atom cells in double). Their
 // scaled recurrences wait here, one queue per node count, and are solved on lanes once L of a
@@ -397,15 +413,10 @@ void solve_reduced_queue(typename ReducedRuleQueues<T, N>::Queue& queue, const M
       unscale(q, queue.scaling[i]);
       valid = finite_rule(q);
     }
-    const std::size_t c = queue.cell[i];
-    if (valid) {
-      store_rule(out, c, q, InversionStatus::reduced);
-      continue;
-    }
-    T cell[2 * N];
-    for (int k = 0; k < 2 * N; ++k) cell[k] = in.moments[k][c];
-    const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell, 2 * N), {.support = support});
-    store_rule(out, c, result.quadrature, result.status);
+    if (valid)
+      store_rule(out, queue.cell[i], q, InversionStatus::reduced);
+    else
+      invert_cell_alone<support>(in, queue.cell[i], out);
   }
   queue.size = 0;
 }
@@ -428,9 +439,8 @@ void solve_reduced_queue(ReducedRuleQueues<T, N>& queues, int k, const MomentBat
 template <Support support, class T, int N>
 void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T, N>& queues,
                  const QuadratureBatch<T, N>& out) {
-  T cell[2 * N];
-  for (int k = 0; k < 2 * N; ++k) cell[k] = in.moments[k][c];
-  const std::span<const T> moments(cell, 2 * N);
+  const std::array<T, 2 * N> cell = cell_moments(in, c);
+  const std::span<const T> moments(cell);
   Recurrence<T, N> reduced;
   const InversionResult<T, N> result = invert_with<T, N>(
       moments, {.support = support}, [&reduced](const Recurrence<T, N>& r, Quadrature<T, N>& q) {

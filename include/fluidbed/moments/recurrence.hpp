@@ -54,15 +54,7 @@ struct Recurrence {
 
 namespace detail {
 
-// Whether x is a normal floating-point number (not 0, subnormal, ±∞ or NaN). Not std::isnormal:
-// nvcc compiles std::isnormal in device code to `false`, without a diagnostic (seen on an H100:
-// every device inversion reported invalid_input; tests/cuda/device_kernels.cu).
-template <class T>
-FLUIDBED_HOST_DEVICE constexpr bool is_normal(const T& x) {
-  using std::abs;
-  const T magnitude = abs(x);
-  return magnitude >= std::numeric_limits<T>::min() && magnitude <= std::numeric_limits<T>::max();
-}
+using fluidbed::detail::is_normal;
 
 // IEEE binary64/binary32: exponents are read from, and powers of two written into, the
 // exponent field (a per-cell library call to frexp/ldexp costs more than Wheeler's whole
