@@ -6,6 +6,7 @@
 // library and Boost.Math (moment_set.hpp's constants).
 #pragma once
 
+#include "moments/accuracy.hpp"
 #include "moments/adaptive.hpp"
 #include "moments/batched.hpp"
 #include "moments/correction.hpp"
