@@ -13,6 +13,7 @@
 //   wheeler_ql     invert<N>(): Wheeler + closed form (n <= 2), three-node solver (n = 3) or
 //                  Golub–Welsch QL
 //   pd_ql          invert<N>() with product-difference
+//   with_error     invert<N>() with the error estimate of the rule (estimate_error, accuracy.hpp)
 //   wheeler_eigen  invert_eigen<N>(): Wheeler + Eigen's tridiagonal solver
 //   batched        invert_batched() on structure-of-arrays fields
 //   batched_float  the same in float (the moments rounded to float)
@@ -235,6 +236,9 @@ void register_benchmarks(Cells set) {
   benchmark::RegisterBenchmark(("wheeler_ql/" + row).c_str(), [f](benchmark::State& s) {
     f->per_cell(s, [](const std::array<double, 2 * N>& m) { return invert<N>(m); });
   });
+  benchmark::RegisterBenchmark(("with_error/" + row).c_str(), [f](benchmark::State& s) {
+    f->per_cell(s, [](const std::array<double, 2 * N>& m) { return invert<N>(m, {.estimate_error = true}); });
+  });
   benchmark::RegisterBenchmark(("pd_ql/" + row).c_str(), [f](benchmark::State& s) {
     f->per_cell(s, [](const std::array<double, 2 * N>& m) {
       return invert<N>(m, {.algorithm = RecurrenceAlgorithm::product_difference});
@@ -267,6 +271,9 @@ int main(int argc, char** argv) {
   reporter.print_table(
       "cells/N (nodes)", rows, {"baseline", "wheeler_ql", "pd_ql", "wheeler_eigen", "batched", "stream"},
       [](const std::string& row) { return "baseline/" + row; }, "baseline/cells/N");
+  reporter.print_table(
+      "cells/N (nodes)", rows, {"wheeler_ql", "with_error"}, [](const std::string& row) { return "wheeler_ql/" + row; },
+      "wheeler_ql/cells/N (the cost of the error estimate)");
   reporter.print_table(
       "cells/N (nodes)", rows, {"batched", "batched_float"}, [](const std::string& row) { return "batched/" + row; },
       "the double batched/cells/N");

@@ -105,24 +105,6 @@ std::string rule_text(std::span<const double> nodes, std::span<const double> wei
   return text;
 }
 
-const char* status_name(InversionStatus s) {
-  switch (s) {
-    case InversionStatus::ok:
-      return "ok";
-    case InversionStatus::reduced:
-      return "reduced";
-    case InversionStatus::zero_mass:
-      return "zero mass";
-    case InversionStatus::not_realizable:
-      return "not realizable";
-    case InversionStatus::invalid_input:
-      return "invalid input";
-    case InversionStatus::eigen_failure:
-      return "eigen failure";
-  }
-  return "?";
-}
-
 // The N-node rules whose moments agree with the printed M_0 … M_{2N−1} to their last digit (the
 // band the printed digits leave), and how much of that rounding box has an N-node rule at all.
 struct Band {

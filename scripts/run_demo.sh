@@ -17,6 +17,8 @@
 #   quadrature_vs_size_distribution  2-, 3-, 4-node quadratures of a log-normal and a sieve PSD
 #   seed003_tables_1_2               seed 003 Tables 1–2: moments and published quadratures, and
 #                                    the band of rules the printed digits allow
+#   inversion_error_estimate         the error estimate of Gauss rules (2–10 nodes, double and
+#                                    float) against the error measured with 50 digits
 # the Python example (examples/python/voidage_ratio.py): the same quantity through the Python
 # package, in the few lines of NumPy and Matplotlib a user would write;
 # and the OpenFOAM demonstration (scripts/run_openfoam_demo.sh): OpenFOAM's fluidisedBed tutorial

@@ -16,6 +16,7 @@
 
 #include "cpp_bin_float_50.hpp"
 #include "fluidbed/moments/accuracy.hpp"
+#include "fluidbed/moments/adaptive.hpp"
 #include "fluidbed/moments/inversion.hpp"
 
 using namespace fluidbed::moments;
@@ -181,4 +182,64 @@ TEST_CASE("estimated_error: units, empty rules, counts and rules with no digit")
   const RuleError<double> lost = estimated_error(std::span<const double>(m), coincident);
   CHECK(std::isinf(lost.nodes));
   CHECK(std::isinf(lost.weights));
+}
+
+TEST_CASE("invert: the estimate on request, and the status inaccurate beyond a required accuracy") {
+  // Four atoms 60–150 µm: the estimate is about 1e-12 in double.
+  const std::array<double, 8> m = moments_of<double, 4>({F("60e-6"), F("80e-6"), F("110e-6"), F("150e-6")},
+                                                         {F("1e9"), F("2e9"), F("1.5e9"), F("5e8")});
+  const InversionResult<double, 4> plain = invert<4>(m);
+  CHECK(plain.error.nodes == -1);  // not asked for
+  CHECK(plain.error.weights == -1);
+  const InversionResult<double, 4> estimated = invert<4>(m, {.estimate_error = true});
+  const RuleError<double> alone = estimated_error(std::span<const double>(m), estimated.quadrature);
+  CHECK(estimated.status == InversionStatus::ok);
+  CHECK(estimated.error.nodes == alone.nodes);  // the same arithmetic in the same exact scales
+  CHECK(estimated.error.weights == alone.weights);
+  CHECK(estimated.error.nodes > 1e-14);
+  CHECK(estimated.error.nodes < 1e-9);
+  for (int i = 0; i < 4; ++i) CHECK(estimated.quadrature.nodes[i] == plain.quadrature.nodes[i]);
+
+  // Moments known to 1e-6 each: the estimate is then dominated by δ Σ|h m|, far above rounding.
+  const InversionResult<double, 4> measured = invert<4>(m, {.estimate_error = true, .moment_accuracy = 1e-6});
+  CHECK(measured.error.nodes > 1e3 * estimated.error.nodes);
+  const RuleError<double> bound = estimated_error(std::span<const double>(m), measured.quadrature,
+                                                  Support::positive_half_line, 1e-6);
+  CHECK(measured.error.nodes == bound.nodes);
+
+  const double larger = std::max(estimated.error.nodes, estimated.error.weights);
+  const InversionResult<double, 4> met = invert<4>(m, {.required_accuracy = 2 * larger});
+  CHECK(met.status == InversionStatus::ok);
+  const InversionResult<double, 4> missed = invert<4>(m, {.required_accuracy = larger / 2});
+  CHECK(missed.status == InversionStatus::inaccurate);
+  CHECK(missed.quadrature.size == 4);  // the rule is still returned
+  CHECK(missed.quadrature.nodes[3] == plain.quadrature.nodes[3]);
+}
+
+TEST_CASE("invert_adaptive: the largest rule that meets a required accuracy") {
+  // Five atoms: with moments known to 1e-8, the 5-node rule has no digit; the required 1 %
+  // is met by fewer nodes, and the rule returned is the largest Gauss rule that meets it.
+  const std::array<F, 5> x = {F("50e-6"), F("70e-6"), F("90e-6"), F("120e-6"), F("160e-6")};
+  const std::array<F, 5> w = {F("1e9"), F("2e9"), F("3e9"), F("2e9"), F("1e9")};
+  const std::array<double, 10> m = moments_of<double, 5>(x, w);
+  const InversionOptions inversion{.moment_accuracy = 1e-8, .required_accuracy = 1e-2};
+  const AdaptiveInversionResult<double, 5> r = invert_adaptive<5>(m, {.inversion = inversion});
+  REQUIRE(r.status == InversionStatus::reduced);
+  CHECK(r.reduced_by == ReductionRule::inaccurate);
+  const int n = r.quadrature.size;
+  REQUIRE(n >= 1);
+  REQUIRE(n < 5);
+  CHECK(r.moments_used == 2 * n);
+  CHECK(r.error.nodes <= 1e-2);
+  CHECK(r.error.weights <= 1e-2);
+  const std::span<const double> all(m);
+  const InversionResult<double, 5> one_more =
+      invert<double, 5>(all.first(std::size_t(2 * n + 2)), {.moment_accuracy = 1e-8, .required_accuracy = 1e-2});
+  CHECK(one_more.status == InversionStatus::inaccurate);
+
+  // A requirement no rule meets: the one-node rule, with status inaccurate.
+  const AdaptiveInversionResult<double, 5> none =
+      invert_adaptive<5>(m, {.inversion = {.moment_accuracy = 1e-8, .required_accuracy = 1e-12}});
+  CHECK(none.status == InversionStatus::inaccurate);
+  CHECK(none.quadrature.size == 1);
 }

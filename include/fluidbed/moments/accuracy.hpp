@@ -44,16 +44,10 @@
 
 #include "../core/config.hpp"
 #include "jacobi_eigen.hpp"
+#include "realizability.hpp"
 #include "recurrence.hpp"
 
 namespace fluidbed::moments {
-
-// Estimated relative errors of a rule (largest over its nodes, and over its weights).
-template <class T>
-struct RuleError {
-  T nodes = T(0);
-  T weights = T(0);
-};
 
 namespace detail {
 
@@ -72,15 +66,66 @@ FLUIDBED_HOST_DEVICE T larger_error(const T& so_far, const T& next) {
   return next > so_far ? next : so_far;
 }
 
-// Coefficients (lowest first) of P(x) = Π_{j < n} (x − x_j); P has n + 1 of them.
+// Whether both estimated errors are within a required relative accuracy.
+template <class T>
+FLUIDBED_HOST_DEVICE bool meets(const RuleError<T>& error, const T& required) {
+  return error.nodes <= required && error.weights <= required;
+}
+
+// The estimate for a rule of n = q.size >= 1 nodes and its 2n moments m, both in the exactly
+// scaled units of the inversion (nodes and moments O(1)); moment_accuracy as estimated_error().
 template <class T, int N>
-FLUIDBED_HOST_DEVICE void node_polynomial(const T (&x)[N], int n, T (&p)[N + 1]) {
+FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const Quadrature<T, N>& q, Support support,
+                                                    const T& moment_accuracy) {
+  using std::abs;
+  using std::sqrt;
+  const int n = q.size;
+  FLUIDBED_EXPECTS(n >= 1 && n <= N && m.size() == std::size_t(2 * n));  // the callers' counts
+  T p[N + 1];  // P(x) = Π_j (x − x_j), coefficients lowest first
   p[0] = T(1);
+  T largest = T(0);
   for (int j = 0; j < n; ++j) {
     p[j + 1] = p[j];
-    for (int k = j; k > 0; --k) p[k] = p[k - 1] - x[j] * p[k];
-    p[0] = -x[j] * p[0];
+    for (int k = j; k > 0; --k) p[k] = p[k - 1] - q.nodes[j] * p[k];
+    p[0] = -q.nodes[j] * p[0];
+    largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
   }
+  const T rounding = inversion_rounding<T>();
+  RuleError<T> error{T(0), T(0)};
+  for (int i = 0; i < n; ++i) {
+    const T x = q.nodes[i];
+    T quotient[N];  // Q_i = P/(x − x_i) by synthetic division
+    quotient[n - 1] = p[n];
+    for (int k = n - 1; k > 0; --k) quotient[k - 1] = p[k] + x * quotient[k];
+    T slope = T(0), curvature = T(0);  // P'(x_i) = Q_i(x_i) and Q_i'(x_i), by Horner
+    for (int k = n - 1; k >= 0; --k) {
+      curvature = curvature * x + slope;
+      slope = slope * x + quotient[k];
+    }
+    T node_part[2 * N] = {}, square_part[2 * N] = {};  // P Q_i and Q_i²
+    for (int b = 0; b < n; ++b) {
+      for (int a = 0; a < n; ++a) square_part[a + b] += quotient[a] * quotient[b];
+      for (int a = 0; a <= n; ++a) node_part[a + b] += p[a] * quotient[b];
+    }
+    const T inverse_square = T(1) / (slope * slope);
+    const T lagrange_slope = T(2) * curvature * slope;  // 2 Q_i'(x_i)/Q_i(x_i), times Q_i(x_i)²
+    T node_bound = T(0), node_squares = T(0), weight_bound = T(0), weight_squares = T(0);
+    for (int k = 0; k < 2 * n; ++k) {
+      const T node_term = node_part[k] * m[std::size_t(k)];
+      const T weight_term = (square_part[k] - lagrange_slope * inverse_square * node_part[k]) * m[std::size_t(k)];
+      node_bound += abs(node_term);
+      node_squares += node_term * node_term;
+      weight_bound += abs(weight_term);
+      weight_squares += weight_term * weight_term;
+    }
+    const T per_weight = inverse_square / abs(q.weights[i]);
+    const T node_scale = support == Support::positive_half_line ? abs(x) : largest;
+    error.nodes = larger_error(error.nodes, (moment_accuracy * node_bound + rounding * sqrt(node_squares)) *
+                                                per_weight / node_scale);
+    error.weights = larger_error(error.weights,
+                                 (moment_accuracy * weight_bound + rounding * sqrt(weight_squares)) * per_weight);
+  }
+  return error;
 }
 
 }  // namespace detail
@@ -88,64 +133,27 @@ FLUIDBED_HOST_DEVICE void node_polynomial(const T (&x)[N], int n, T (&p)[N + 1])
 // The estimated relative error of `rule`, inverted from `moments` (its 2n moments m_0 …
 // m_{2n−1}, n = rule.size, in the caller's units), given that each moment is known to a
 // relative `moment_accuracy` (0: exact as given, so only the inversion's rounding counts).
-// Infinite where the rule has no digit to estimate (a zero weight, coincident nodes, or a
+// invert() returns the same estimate in InversionResult::error when InversionOptions asks for
+// it. Infinite where the rule has no digit to estimate (a zero weight, coincident nodes, or a
 // moment count that is not 2n); zeros for an empty rule.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE RuleError<T> estimated_error(std::span<const T> moments, const Quadrature<T, N>& rule,
                                                   Support support = Support::positive_half_line,
                                                   T moment_accuracy = T(0)) {
-  using std::abs;
-  using std::sqrt;
   const T infinity = std::numeric_limits<T>::infinity();
   const int n = rule.size;
-  RuleError<T> error;
-  if (n == 0) return error;
+  if (n == 0) return {T(0), T(0)};
   if (n < 0 || n > N || moments.size() != std::size_t(2 * n)) return {infinity, infinity};
-  // In the moments' exact power-of-two scales, where nodes and moments are O(1).
+  // In the moments' exact power-of-two scales, as the inversion runs.
   const detail::ScaledMoments<T, N> scaled = detail::scaled_moments<T, N>(moments);
   const MomentScaling s = scaled.scaling;
-  T x[N], w[N];
-  T largest = T(0);
+  const T length = detail::power_of_two<T>(-s.length_exponent), weight = detail::power_of_two<T>(-s.weight_exponent);
+  Quadrature<T, N> q = rule;
   for (int i = 0; i < n; ++i) {
-    x[i] = detail::times_power_of_two(rule.nodes[i], detail::power_of_two<T>(-s.length_exponent), -s.length_exponent);
-    w[i] = detail::times_power_of_two(rule.weights[i], detail::power_of_two<T>(-s.weight_exponent), -s.weight_exponent);
-    largest = abs(x[i]) > largest ? abs(x[i]) : largest;
+    q.nodes[i] = detail::times_power_of_two(rule.nodes[i], length, -s.length_exponent);
+    q.weights[i] = detail::times_power_of_two(rule.weights[i], weight, -s.weight_exponent);
   }
-  T p[N + 1];
-  detail::node_polynomial(x, n, p);
-  const T rounding = detail::inversion_rounding<T>();
-  for (int i = 0; i < n; ++i) {
-    T q[N];  // Q_i = P/(x − x_i) by synthetic division, then Q_i(x_i) and Q_i'(x_i) by Horner
-    q[n - 1] = p[n];
-    for (int k = n - 1; k > 0; --k) q[k - 1] = p[k] + x[i] * q[k];
-    T slope = T(0), curvature = T(0);  // P'(x_i) = Q_i(x_i), Q_i'(x_i)
-    for (int k = n - 1; k >= 0; --k) {
-      curvature = curvature * x[i] + slope;
-      slope = slope * x[i] + q[k];
-    }
-    T node_part[2 * N] = {}, square_part[2 * N] = {};  // P Q_i and Q_i²
-    for (int b = 0; b < n; ++b) {
-      for (int a = 0; a < n; ++a) square_part[a + b] += q[a] * q[b];
-      for (int a = 0; a <= n; ++a) node_part[a + b] += p[a] * q[b];
-    }
-    const T inverse_square = T(1) / (slope * slope), lagrange_slope = T(2) * curvature / slope;
-    T node_bound = T(0), node_sum_of_squares = T(0), weight_bound = T(0), weight_sum_of_squares = T(0);
-    for (int k = 0; k < 2 * n; ++k) {
-      const T m = scaled.values[std::size_t(k)];
-      const T node_term = node_part[k] * inverse_square * m;
-      const T weight_term = (square_part[k] * inverse_square - lagrange_slope * node_part[k] * inverse_square) * m;
-      node_bound += abs(node_term);
-      node_sum_of_squares += node_term * node_term;
-      weight_bound += abs(weight_term);
-      weight_sum_of_squares += weight_term * weight_term;
-    }
-    const T node_scale = abs(w[i]) * (support == Support::positive_half_line ? abs(x[i]) : largest);
-    const T node_error = (moment_accuracy * node_bound + rounding * sqrt(node_sum_of_squares)) / node_scale;
-    const T weight_error = (moment_accuracy * weight_bound + rounding * sqrt(weight_sum_of_squares)) / abs(w[i]);
-    error.nodes = detail::larger_error(error.nodes, node_error);
-    error.weights = detail::larger_error(error.weights, weight_error);
-  }
-  return error;
+  return detail::scaled_rule_error(scaled.view(), q, support, moment_accuracy);
 }
 
 }  // namespace fluidbed::moments

@@ -86,6 +86,7 @@ enum class ReductionRule {
   close_nodes,    // two nodes closer than min_node_separation × x_rms
   near_boundary,  // a ζ_j < boundary_tolerance × ζ_1 (β_k < boundary_tolerance × m_2/m_0 on the line)
   radau_invalid,  // the Gauss–Radau rule had a weight <= 0 (or a node < 0 on [0, ∞)): Gauss used
+  inaccurate,     // the estimated error exceeded inversion.required_accuracy (accuracy.hpp)
 };
 
 // ε^{1/3} of T, the default of both relative thresholds (see the header comment).
@@ -236,8 +237,11 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> gauss_radau(std::span<const T> m, con
 // or its last moment dropped, as reduced_by and moments_used say); another count is
 // invalid_input with no nodes. Steps: realizability (the realizable moment count R, as in
 // realizability()); the rule for R (Gauss–Radau with ⌊R/2⌋ + 1 nodes if R is odd and radau is
-// set, else Gauss with ⌊R/2⌋ nodes); then, while the rule has > 1 node and is degenerate, the
-// Gauss rule with one node less. Allocation-free, no exceptions; statuses as invert().
+// set, else Gauss with ⌊R/2⌋ nodes); then, while the rule has > 1 node and is degenerate, or
+// (with inversion.required_accuracy > 0) its estimated error exceeds the requirement, the Gauss
+// rule with one node less: the largest rule that meets the requirement, or status inaccurate with
+// the one-node rule if none does. The Gauss–Radau rule carries no estimate (error −1).
+// Allocation-free, no exceptions; statuses as invert().
 // Preconditions: the three thresholds of `options` >= 0 (NaN moments are a status, NaN options
 // are not).
 template <class T, int N>
@@ -263,6 +267,7 @@ FLUIDBED_HOST_DEVICE AdaptiveInversionResult<T, N> invert_adaptive(std::span<con
                                                     : ReductionRule::near_boundary;
 
   int used = options.radau && R % 2 == 1 ? R : 2 * (R / 2);
+  InversionResult<T, N> gauss;  // the last Gauss rule of the loop below
   if (used % 2 == 1) {
     out.radau = detail::gauss_radau_rule(a, used / 2, options.fixed_node, options.inversion, out.quadrature);
     if (!out.radau) {
@@ -272,20 +277,30 @@ FLUIDBED_HOST_DEVICE AdaptiveInversionResult<T, N> invert_adaptive(std::span<con
   }
   for (;;) {
     if (used % 2 == 0) {
-      const InversionResult<T, N> gauss = invert<T, N>(m.first(std::size_t(used)), options.inversion);
-      if (gauss.status != InversionStatus::ok && gauss.status != InversionStatus::reduced) {
+      gauss = invert<T, N>(m.first(std::size_t(used)), options.inversion);
+      if (gauss.status != InversionStatus::ok && gauss.status != InversionStatus::reduced &&
+          gauss.status != InversionStatus::inaccurate) {
         out.status = gauss.status;  // eigen_failure (the prefix itself passed the checks above)
         out.quadrature = gauss.quadrature;
         return out;
       }
       out.quadrature = gauss.quadrature;
-      if (gauss.status == InversionStatus::reduced) {  // product-difference rounding: fewer than Wheeler
+      out.error = gauss.error;
+      if (gauss.quadrature.size < used / 2) {  // product-difference rounding: fewer than Wheeler
         out.reduced_by = ReductionRule::realizability;
         used = 2 * gauss.quadrature.size;
       }
     }
-    const ReductionRule rule =
-        detail::degeneracy(out.quadrature, options.min_weight_fraction, options.min_node_separation);
+    ReductionRule rule = detail::degeneracy(out.quadrature, options.min_weight_fraction, options.min_node_separation);
+    if (rule == ReductionRule::none && gauss.status == InversionStatus::inaccurate && used % 2 == 0) {
+      if (out.quadrature.size <= 1) {  // no rule meets the requirement
+        out.status = InversionStatus::inaccurate;
+        out.moments_used = used;
+        out.boundary_distance = detail::boundary_distance(a.recurrence, a.scan.zeta, used, support);
+        return out;
+      }
+      rule = ReductionRule::inaccurate;
+    }
     if (rule == ReductionRule::none) break;
     out.reduced_by = rule;
     out.radau = false;

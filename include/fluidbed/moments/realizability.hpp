@@ -39,6 +39,39 @@ enum class InversionStatus {
   eigen_failure,   // the QL iteration did not converge, or the rule is not representable in
                    // scaled units (nodes spread beyond the floating-point range); never observed
                    // for size distributions; no nodes
+  inaccurate,      // a rule (returned, as for ok or reduced) whose estimated error exceeds the
+                   // caller's InversionOptions::required_accuracy (accuracy.hpp); only when asked
+};
+
+// The enumerator's name ("ok", "reduced", …), for messages and logs.
+constexpr const char* status_name(InversionStatus status) {
+  switch (status) {
+    case InversionStatus::ok:
+      return "ok";
+    case InversionStatus::reduced:
+      return "reduced";
+    case InversionStatus::zero_mass:
+      return "zero_mass";
+    case InversionStatus::not_realizable:
+      return "not_realizable";
+    case InversionStatus::invalid_input:
+      return "invalid_input";
+    case InversionStatus::eigen_failure:
+      return "eigen_failure";
+    case InversionStatus::inaccurate:
+      return "inaccurate";
+  }
+  return "<not an InversionStatus>";
+}
+
+// Estimated relative errors of a rule, the largest over its nodes and over its weights
+// (accuracy.hpp): node errors relative to the node on [0, ∞), to the largest |node| on the real
+// line; weight errors relative to the weight. −1 where no estimate was asked for; +∞ where the
+// rule has no digit to estimate.
+template <class T>
+struct RuleError {
+  T nodes = T(-1);
+  T weights = T(-1);
 };
 
 template <class T, int N>
@@ -55,6 +88,9 @@ struct InversionResult {
   // j = 1 … 2 size − 1 ([0, ∞)), or min_k β_k/(m_2/m_0) over k = 1 … size − 1 (real line); 1
   // for a single node. Near 0: close to the boundary (a nearly degenerate set).
   T boundary_distance = T(0);
+  // The estimated relative error of the rule, when InversionOptions asked for it (estimate_error
+  // or required_accuracy): from the rounding of the inversion and the caller's moment_accuracy.
+  RuleError<T> error;
 };
 
 namespace detail {
