@@ -14,20 +14,24 @@
 // (Hermite interpolation; e.g. Gautschi (2004), Orthogonal Polynomials: Computation and
 // Approximation, Oxford, §2.1, for the conditioning of the moment map it measures).
 //
-// Estimate. Two sources, added:
+// Estimate. With the sensitivities S_i = Σ_k |h_ik m_k| (and S̃_i for the nodes), two sources:
 //   - the caller's moments, each off by up to a relative δ (transport, measurement, printed
-//     digits): the worst case δ Σ_k |h_k m_k|, a bound to first order;
+//     digits): the worst case δ S_i, a bound to first order (attained by one sign pattern of the
+//     moment errors);
 //   - the rounding of the inversion itself (scaling, Wheeler's recurrence, the eigen-solver):
 //     it acts on the rule like a random relative perturbation of the moments of a fraction of
-//     an ulp, estimated as κ ε (Σ_k (h_k m_k)²)^(1/2) with κ = 1/16. κ was measured, not
+//     an ulp, estimated as κ ε S_i/√(2n) with κ = 1/16. κ and the √(2n) were measured, not
 //     derived: over random 2…8-atom size distributions (log-normal sizes around 100 µm,
 //     σ_ln 0.45 and 1.3) the double inversion's error against a 50-digit inversion of the same
-//     moments has a median of about ε/13 times the root-sum-square, independent of the
-//     conditioning from 1e-15 to 1; κ = 1/16 makes the estimate about that median (96 % of
-//     cells within a factor 10, none below 0.09 of the error; κ = 1/32 would bracket 98 % but
-//     fall below the error of most cells). With floating-point contraction (FMA) the inversion
-//     errs about half as much: the estimate is then about twice the median error (90–92 % of
-//     cells within a factor 10).
+//     moments has a median of about ε S_i/(11–14 √(2n)), independent of the conditioning from
+//     1e-15 to 1 and of n; κ = 1/16 puts the estimate at 0.6–0.8 of the median error (about
+//     97 % of cells within a factor 10 of it; examples/inversion_error_estimate.cpp). With
+//     floating-point contraction (FMA) the inversion errs about half as much, and the estimate
+//     is then above the median error by about as much.
+// Weights of less than ε³ of the mass are given no digit (tiny_weight_share below).
+// The sensitivities: on [0, ∞) in O(n²) per node from the nodes alone (the coefficients of H̃_i
+// alternate in sign; positive_node_sensitivity); on the real line from the coefficients, summed
+// against the moments (general_node_sensitivity).
 // The error of one inversion is one draw: perturbing a cell's moments by one ulp moves its
 // measured error by 0.40 decades (standard deviation of log10; p1–p99 of 2 decades) around
 // that cell's mean, so no estimate from the rule can bracket more than about 98 % of cells
@@ -35,7 +39,7 @@
 //
 // Units: node errors are relative to the node on [0, ∞) and to the largest |node| on the real
 // line (a velocity node near zero has no relative error of its own); weight errors to the
-// weight. First order: an estimate above about 0.1 means no correct digit, not its size.
+// weight. First order: an estimate above about 0.01 means few or no correct digits, not how many.
 #pragma once
 
 #include <cmath>
@@ -51,11 +55,25 @@ namespace fluidbed::moments {
 
 namespace detail {
 
-// The rounding of the inversion as a relative perturbation of each moment, root-sum-square
-// (κ ε above).
+// The rounding of the inversion as a relative perturbation of each moment (κ ε above), to be
+// divided by √(2n).
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T inversion_rounding() {
   return std::numeric_limits<T>::epsilon() / T(16);
+}
+
+// ε³: a weight below this share of the rule's mass is given no digit (tiny_weight_share × mass/w
+// is added to its error estimate). The sensitivity misses what happens to such weights: in float,
+// a 9-node log-normal cell's rule had a weight of 7e-35 of the mass, off by 42 %, where the
+// sensitivity said 5e-5. ε³ is 1.7e-21 in float and 1.1e-47 in double: on the cells of
+// examples/inversion_error_estimate.cpp it marks that weight, leaves every double estimate as it
+// was, and raises float ones only for log-normal cells of 7–9 nodes. ε or ε² instead would
+// overestimate double log-normal cells of 9–10 nodes by 10–20× (the QL resolves their small
+// weights far better than that).
+template <class T>
+FLUIDBED_HOST_DEVICE constexpr T tiny_weight_share() {
+  const T epsilon = std::numeric_limits<T>::epsilon();
+  return epsilon * epsilon * epsilon;
 }
 
 // The larger of two error estimates, infinite where the new one is not a number (a zero weight
@@ -72,6 +90,84 @@ FLUIDBED_HOST_DEVICE bool meets(const RuleError<T>& error, const T& required) {
   return error.nodes <= required && error.weights <= required;
 }
 
+// Σ_k |h̃_ik m_k| and Σ_k |h_ik m_k| of node i: the sensitivities of w_i x_i and w_i to the moments.
+template <class T>
+struct NodeSensitivity {
+  T node = T(0), weight = T(0);
+};
+
+// On [0, ∞), nodes > 0: H̃_i = P Q_i/Q_i(x_i)² has positive roots only, so its coefficients
+// alternate in sign and Σ_k |h̃_ik| x^k = |H̃_i(−x)| for x > 0; with m_k = Σ_j w_j x_j^k (the
+// rule reproduces its moments),
+//   Σ_k |h̃_ik| m_k = Σ_j w_j |P(−x_j) Q_i(−x_j)| / Q_i(x_i)² = Σ_j w_j A_j B_ij / d_i²,
+//   A_j = Π_l (x_j + x_l),  B_ij = Π_{l≠i} (x_j + x_l),  d_i = Q_i(x_i) = Π_{l≠i} (x_i − x_l).
+// H_i = ℓ_i² (1 − 2 ℓ_i'(x_i) (x − x_i)), ℓ_i = Q_i/d_i, ℓ_i'(x_i) = Q_i'(x_i)/d_i: the absolute
+// coefficients of a product are at most the product of the factors' (equality when the linear
+// factor's root is positive too), so
+//   Σ_k |h_ik| m_k <= Σ_j w_j (B_ij/d_i)² (|1 + 2 ℓ_i'(x_i) x_i| + 2 |ℓ_i'(x_i)| x_j).
+// O(n²) per node, no polynomial formed.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE NodeSensitivity<T> positive_node_sensitivity(const Quadrature<T, N>& q, int i) {
+  using std::abs;
+  const int n = q.size;
+  const T x = q.nodes[i];
+  T d = T(1), slope = T(0);  // Q_i(x_i) and Q_i'(x_i), by the product rule
+  for (int l = 0; l < n; ++l)
+    if (l != i) {
+      slope = slope * (x - q.nodes[l]) + d;
+      d *= x - q.nodes[l];
+    }
+  const T inverse_d = T(1) / d;
+  const T lagrange_slope = T(2) * slope * inverse_d;  // 2 ℓ_i'(x_i)
+  const T constant = abs(T(1) + lagrange_slope * x), linear = abs(lagrange_slope);
+  NodeSensitivity<T> s;
+  for (int j = 0; j < n; ++j) {
+    const T xj = q.nodes[j];
+    T others = T(1);  // B_ij
+    for (int l = 0; l < n; ++l)
+      if (l != i) others *= xj + q.nodes[l];
+    s.node += q.weights[j] * (xj + x) * others * others;  // A_j B_ij = (x_j + x_i) B_ij²
+    s.weight += q.weights[j] * others * others * (constant + linear * xj);
+  }
+  s.node *= inverse_d * inverse_d;
+  s.weight *= inverse_d * inverse_d;
+  return s;
+}
+
+// Any support: the coefficients of H̃_i and H_i formed (O(n²) per node) and summed against the
+// moments m_0 … m_{2n−1}; P's coefficients in p (lowest first).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE NodeSensitivity<T> general_node_sensitivity(std::span<const T> m, const Quadrature<T, N>& q,
+                                                                 const T (&p)[N + 1], int i) {
+  using std::abs;
+  const int n = q.size;
+  const T x = q.nodes[i];
+  T quotient[N];  // Q_i = P/(x − x_i) by synthetic division
+  quotient[n - 1] = p[n];
+  for (int k = n - 1; k > 0; --k) quotient[k - 1] = p[k] + x * quotient[k];
+  T d = T(0), slope = T(0);  // Q_i(x_i) = P'(x_i) and Q_i'(x_i), by Horner
+  for (int k = n - 1; k >= 0; --k) {
+    slope = slope * x + d;
+    d = d * x + quotient[k];
+  }
+  T node_part[2 * N] = {}, square_part[2 * N] = {};  // P Q_i and Q_i²
+  for (int b = 0; b < n; ++b) {
+    for (int a = 0; a < n; ++a) square_part[a + b] += quotient[a] * quotient[b];
+    for (int a = 0; a <= n; ++a) node_part[a + b] += p[a] * quotient[b];
+  }
+  const T inverse_d = T(1) / d;
+  const T lagrange_slope = T(2) * slope * inverse_d;  // 2 ℓ_i'(x_i)
+  NodeSensitivity<T> s;
+  for (int k = 0; k < 2 * n; ++k) {
+    const T mk = m[std::size_t(k)];
+    s.node += abs(node_part[k] * mk);
+    s.weight += abs((square_part[k] - lagrange_slope * node_part[k]) * mk);
+  }
+  s.node *= inverse_d * inverse_d;
+  s.weight *= inverse_d * inverse_d;
+  return s;
+}
+
 // The estimate for a rule of n = q.size >= 1 nodes and its 2n moments m, both in the exactly
 // scaled units of the inversion (nodes and moments O(1)); moment_accuracy as estimated_error().
 template <class T, int N>
@@ -81,49 +177,28 @@ FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const 
   using std::sqrt;
   const int n = q.size;
   FLUIDBED_EXPECTS(n >= 1 && n <= N && m.size() == std::size_t(2 * n));  // the callers' counts
-  T p[N + 1];  // P(x) = Π_j (x − x_j), coefficients lowest first
-  p[0] = T(1);
+  const bool positive = support == Support::positive_half_line;
+  T p[N + 1] = {};  // P(x) = Π_j (x − x_j), lowest coefficient first (general path only)
   T largest = T(0);
-  for (int j = 0; j < n; ++j) {
-    p[j + 1] = p[j];
-    for (int k = j; k > 0; --k) p[k] = p[k - 1] - q.nodes[j] * p[k];
-    p[0] = -q.nodes[j] * p[0];
-    largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
+  if (!positive) {
+    p[0] = T(1);
+    for (int j = 0; j < n; ++j) {
+      p[j + 1] = p[j];
+      for (int k = j; k > 0; --k) p[k] = p[k - 1] - q.nodes[j] * p[k];
+      p[0] = -q.nodes[j] * p[0];
+      largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
+    }
   }
-  const T rounding = inversion_rounding<T>();
+  const T perturbation = moment_accuracy + inversion_rounding<T>() / sqrt(T(2 * n));
   RuleError<T> error{T(0), T(0)};
+  T mass = T(0);
+  for (int i = 0; i < n; ++i) mass += abs(q.weights[i]);
+  const T smallest_share = tiny_weight_share<T>();
   for (int i = 0; i < n; ++i) {
-    const T x = q.nodes[i];
-    T quotient[N];  // Q_i = P/(x − x_i) by synthetic division
-    quotient[n - 1] = p[n];
-    for (int k = n - 1; k > 0; --k) quotient[k - 1] = p[k] + x * quotient[k];
-    T slope = T(0), curvature = T(0);  // P'(x_i) = Q_i(x_i) and Q_i'(x_i), by Horner
-    for (int k = n - 1; k >= 0; --k) {
-      curvature = curvature * x + slope;
-      slope = slope * x + quotient[k];
-    }
-    T node_part[2 * N] = {}, square_part[2 * N] = {};  // P Q_i and Q_i²
-    for (int b = 0; b < n; ++b) {
-      for (int a = 0; a < n; ++a) square_part[a + b] += quotient[a] * quotient[b];
-      for (int a = 0; a <= n; ++a) node_part[a + b] += p[a] * quotient[b];
-    }
-    const T inverse_square = T(1) / (slope * slope);
-    const T lagrange_slope = T(2) * curvature * slope;  // 2 Q_i'(x_i)/Q_i(x_i), times Q_i(x_i)²
-    T node_bound = T(0), node_squares = T(0), weight_bound = T(0), weight_squares = T(0);
-    for (int k = 0; k < 2 * n; ++k) {
-      const T node_term = node_part[k] * m[std::size_t(k)];
-      const T weight_term = (square_part[k] - lagrange_slope * inverse_square * node_part[k]) * m[std::size_t(k)];
-      node_bound += abs(node_term);
-      node_squares += node_term * node_term;
-      weight_bound += abs(weight_term);
-      weight_squares += weight_term * weight_term;
-    }
-    const T per_weight = inverse_square / abs(q.weights[i]);
-    const T node_scale = support == Support::positive_half_line ? abs(x) : largest;
-    error.nodes = larger_error(error.nodes, (moment_accuracy * node_bound + rounding * sqrt(node_squares)) *
-                                                per_weight / node_scale);
-    error.weights = larger_error(error.weights,
-                                 (moment_accuracy * weight_bound + rounding * sqrt(weight_squares)) * per_weight);
+    const NodeSensitivity<T> s = positive ? positive_node_sensitivity(q, i) : general_node_sensitivity(m, q, p, i);
+    const T per_weight = perturbation / abs(q.weights[i]);
+    error.nodes = larger_error(error.nodes, s.node * per_weight / (positive ? abs(q.nodes[i]) : largest));
+    error.weights = larger_error(error.weights, s.weight * per_weight + smallest_share * (mass / abs(q.weights[i])));
   }
   return error;
 }
