@@ -15,10 +15,10 @@
 // Approximation, Oxford, §2.1, for the conditioning of the moment map it measures).
 //
 // Estimate. With the sensitivities S_i = Σ_k |h_ik m_k| (and S̃_i for the nodes), two sources:
-//   - the caller's moments, each off by up to a relative δ (transport, measurement, printed
+//   * the caller's moments, each off by up to a relative δ (transport, measurement, printed
 //     digits): the worst case δ S_i, a bound to first order (attained by one sign pattern of the
 //     moment errors);
-//   - the rounding of the inversion itself (scaling, Wheeler's recurrence, the eigen-solver):
+//   * the rounding of the inversion itself (scaling, Wheeler's recurrence, the eigen-solver):
 //     it acts on the rule like a random relative perturbation of the moments of a fraction of
 //     an ulp, estimated as κ ε S_i/√(2n) with κ = 1/16. κ and the √(2n) were measured, not
 //     derived: over random 2…8-atom size distributions (log-normal sizes around 100 µm,
