@@ -196,9 +196,11 @@ FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const 
   const T smallest_share = tiny_weight_share<T>();
   for (int i = 0; i < n; ++i) {
     const NodeSensitivity<T> s = positive ? positive_node_sensitivity(q, i) : general_node_sensitivity(m, q, p, i);
-    const T per_weight = perturbation / abs(q.weights[i]);
-    error.nodes = larger_error(error.nodes, s.node * per_weight / (positive ? abs(q.nodes[i]) : largest));
-    error.weights = larger_error(error.weights, s.weight * per_weight + smallest_share * (mass / abs(q.weights[i])));
+    const T node_scale = positive ? abs(q.nodes[i]) : largest;
+    const T per_node = T(1) / (abs(q.weights[i]) * node_scale);  // one division for 1/(w x) and 1/w
+    const T per_weight = per_node * node_scale;
+    error.nodes = larger_error(error.nodes, perturbation * s.node * per_node);
+    error.weights = larger_error(error.weights, (perturbation * s.weight + smallest_share * mass) * per_weight);
   }
   return error;
 }
