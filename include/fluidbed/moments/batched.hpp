@@ -59,13 +59,17 @@ struct MomentBatch {
 
 // Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
 // weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
-// Every span must have as many entries as the batch has cells.
+// Every span must have as many entries as the batch has cells, except node_errors and
+// weight_errors, which may be empty: given, they receive InversionResult::error of each cell
+// (−1 where no estimate was asked for or the cell has no rule).
 template <class T, int N>
 struct QuadratureBatch {
   std::array<std::span<T>, N> nodes{};
   std::array<std::span<T>, N> weights{};
   std::span<int> sizes;
   std::span<InversionStatus> status;
+  std::span<T> node_errors;
+  std::span<T> weight_errors;
 };
 
 namespace detail {
@@ -516,11 +520,42 @@ void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& ou
     if (queues.queues[k - 4].size > 0) solve_reduced_queue<support>(queues, k, in, out);
 }
 
-// Whether every span of a batch has as many entries as it has cells.
+// The error estimate of every cell's rule as invert() makes it with `options`, after the
+// rules are in place: stored in the error spans when they are given, and, with a required
+// accuracy, a rule that misses it marked inaccurate. Per cell (O(n²) per node, from the rule).
+template <class T, int N>
+void estimate_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, const InversionOptions& options) {
+  const bool store = !out.node_errors.empty();
+  for (std::size_t c = 0; c < in.cells(); ++c) {
+    RuleError<T> error;
+    const bool has_rule = out.status[c] == InversionStatus::ok || out.status[c] == InversionStatus::reduced;
+    if (has_rule) {
+      const std::array<T, 2 * N> cell = cell_moments(in, c);
+      Quadrature<T, N> q;
+      q.size = out.sizes[c];
+      for (int i = 0; i < q.size; ++i) {
+        q.nodes[i] = out.nodes[i][c];
+        q.weights[i] = out.weights[i][c];
+      }
+      error = estimated_error(std::span<const T>(cell).first(std::size_t(2 * q.size)), q, options.support,
+                              T(options.moment_accuracy));
+      if (options.required_accuracy > 0 && !meets(error, T(options.required_accuracy)))
+        out.status[c] = InversionStatus::inaccurate;
+    }
+    if (store) {
+      out.node_errors[c] = error.nodes;
+      out.weight_errors[c] = error.weights;
+    }
+  }
+}
+
+// Whether every span of a batch has as many entries as it has cells (the error spans: or none).
 template <class T, int N>
 bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
   const std::size_t cells = in.cells();
-  bool same = out.sizes.size() == cells && out.status.size() == cells;
+  const bool errors = out.node_errors.empty() && out.weight_errors.empty();
+  bool same = out.sizes.size() == cells && out.status.size() == cells &&
+              (errors || (out.node_errors.size() == cells && out.weight_errors.size() == cells));
   for (const std::span<const T>& moment : in.moments) same = same && moment.size() == cells;
   for (int i = 0; i < N; ++i) same = same && out.nodes[i].size() == cells && out.weights[i].size() == cells;
   return same;
@@ -538,12 +573,26 @@ bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& 
 template <class T, int N>
 [[nodiscard]] bool invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
                                   Support support = Support::positive_half_line) {
+  return invert_batched(in, out, InversionOptions{.support = support});
+}
+
+// The same with InversionOptions: its support, and the error estimate (estimate_error,
+// moment_accuracy, required_accuracy) as invert() makes it, from each cell's rule; algorithm and
+// solver are those of the batched path (Wheeler, the solvers above). The estimate is made per
+// cell after the lanes, at about the per-cell cost of estimated_error().
+template <class T, int N>
+[[nodiscard]] bool invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
+                                  const InversionOptions& options) {
   static_assert(N >= 1, "fluidbed::moments::invert_batched: N >= 1 nodes per cell");
   if (!detail::same_cell_counts(in, out)) return false;
-  if (support == Support::positive_half_line)
+  if (options.support == Support::positive_half_line)
     detail::invert_batched<Support::positive_half_line>(in, out);
   else
     detail::invert_batched<Support::real_line>(in, out);
+  if (options.estimate_error || options.required_accuracy > 0)
+    detail::estimate_errors(in, out, options);
+  else if (!out.node_errors.empty())
+    for (std::size_t c = 0; c < in.cells(); ++c) out.node_errors[c] = out.weight_errors[c] = T(-1);
   return true;
 }
 
