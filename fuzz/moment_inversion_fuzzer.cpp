@@ -153,6 +153,35 @@ void check_inversion(const char* entry, const InversionResult<T, N>& r, std::spa
                double(r.failing_value), text(m).c_str());
 }
 
+// The error estimate on request (accuracy.hpp) changes neither rule nor status, except that a
+// rule beyond a required accuracy is inaccurate; the estimate is >= 0 or +∞ (never NaN) wherever
+// there is a rule, and −1 (none) elsewhere.
+template <class T, int N>
+void check_estimate(const InversionResult<T, N>& plain, std::span<const T> m, const InversionOptions& options) {
+  InversionOptions asked = options;
+  asked.estimate_error = true;
+  const InversionResult<T, N> r = invert<T, N>(m, asked);
+  FUZZ_CHECK(r.status == plain.status && r.quadrature.size == plain.quadrature.size,
+             "invert with estimate: status %s (%d nodes), without %s (%d); moments %s", status_name(r.status),
+             r.quadrature.size, status_name(plain.status), plain.quadrature.size, text(m).c_str());
+  for (int i = 0; i < r.quadrature.size && i < plain.quadrature.size; ++i)
+    FUZZ_CHECK(same_bits(r.quadrature.nodes[i], plain.quadrature.nodes[i]) &&
+                   same_bits(r.quadrature.weights[i], plain.quadrature.weights[i]),
+               "invert with estimate: node %d differs; moments %s", i, text(m).c_str());
+  const T e[2] = {r.error.nodes, r.error.weights};
+  for (const T& x : e)
+    FUZZ_CHECK(has_nodes(r.status) ? x >= T(0) : x == T(-1),
+               "invert with estimate: error estimate %.17g with status %s; moments %s", double(x),
+               status_name(r.status), text(m).c_str());
+  if (!has_nodes(r.status)) return;
+  asked.required_accuracy = double(std::max(r.error.nodes, r.error.weights)) / 2;
+  if (!(asked.required_accuracy > 0) || !std::isfinite(asked.required_accuracy)) return;
+  const InversionResult<T, N> strict = invert<T, N>(m, asked);
+  FUZZ_CHECK(strict.status == InversionStatus::inaccurate && strict.quadrature.size == r.quadrature.size,
+             "invert with required accuracy %.17g below the estimate: status %s; moments %s",
+             asked.required_accuracy, status_name(strict.status), text(m).c_str());
+}
+
 // Two inversions of the same set by different eigen-solvers: same status, nodes equal to rounding
 // (the recurrence is shared; only the eigen step differs).
 // Whether a node or weight of q lies within a factor 2 of the largest finite number.
@@ -354,6 +383,7 @@ InversionResult<T, N> inversions(const Problem<T>& p, std::span<const T> m) {
   const InversionResult<T, N> by_eigen = invert_eigen<T, N>(m, p.options);
   check_inversion("invert_eigen", by_eigen, m, p.options);
   check_same_rule("invert vs invert_eigen", r, by_eigen, m);
+  check_estimate(r, m, p.options);
   return r;
 }
 
