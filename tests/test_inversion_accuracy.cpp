@@ -246,7 +246,7 @@ TEST_CASE("invert_adaptive: the largest rule that meets a required accuracy") {
   CHECK(none.quadrature.size == 1);
 }
 
-TEST_CASE("estimated_error: the O(n²) sensitivities of [0, ∞) equal the coefficient sums (50 digits)") {
+TEST_CASE("estimated_error: the O(n²) sensitivities on the positive half-line equal the coefficient sums (50 digits)") {
   // For positive nodes the node sensitivity Σ_k |h̃_ik m_k| is exactly Σ_j w_j |H̃_i(−x_j)|; the
   // weight one bounds Σ_k |h_ik m_k|, with equality where H_i's linear factor has a positive root.
   const std::array<F, 4> x = {F("40e-6"), F("70e-6"), F("110e-6"), F("300e-6")};
