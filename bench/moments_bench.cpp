@@ -16,6 +16,7 @@
 //   with_error     invert<N>() with the error estimate of the rule (estimate_error, accuracy.hpp)
 //   wheeler_eigen  invert_eigen<N>(): Wheeler + Eigen's tridiagonal solver
 //   batched        invert_batched() on structure-of-arrays fields
+//   batched_with_error  the same with the error estimate (InversionOptions::estimate_error)
 //   batched_float  the same in float (the moments rounded to float)
 //   stream         the streaming limit of the batched path: read the 2N moment fields and write
 //                  the N node and N weight fields (a copy), nothing computed
@@ -148,10 +149,11 @@ struct BatchFields {
     out.status = status;
   }
 
-  void batched(benchmark::State& state) {
-    if (!invert_batched(in, out)) state.SkipWithError("invert_batched: arrays of different lengths");
+  // invert_batched() with `options` (the default: none, the plain batched path).
+  void batched(benchmark::State& state, const InversionOptions& options = {}) {
+    if (!invert_batched(in, out, options)) state.SkipWithError("invert_batched: arrays of different lengths");
     for (auto _ : state) {
-      benchmark::DoNotOptimize(invert_batched(in, out));
+      benchmark::DoNotOptimize(invert_batched(in, out, options));
       benchmark::DoNotOptimize(nodes.data());
       benchmark::DoNotOptimize(weights.data());
       benchmark::ClobberMemory();
@@ -248,6 +250,8 @@ void register_benchmarks(Cells set) {
     f->per_cell(s, [](const std::array<double, 2 * N>& m) { return invert_eigen<N>(m); });
   });
   benchmark::RegisterBenchmark(("batched/" + row).c_str(), [f](benchmark::State& s) { f->fields.batched(s); });
+  benchmark::RegisterBenchmark(("batched_with_error/" + row).c_str(),
+                               [f](benchmark::State& s) { f->fields.batched(s, {.estimate_error = true}); });
   benchmark::RegisterBenchmark(("batched_float/" + row).c_str(),
                                [f](benchmark::State& s) { f->float_fields.batched(s); });
   benchmark::RegisterBenchmark(("stream/" + row).c_str(), [f](benchmark::State& s) { f->fields.stream(s); });
@@ -274,6 +278,9 @@ int main(int argc, char** argv) {
   reporter.print_table(
       "cells/N (nodes)", rows, {"wheeler_ql", "with_error"}, [](const std::string& row) { return "wheeler_ql/" + row; },
       "wheeler_ql/cells/N (the cost of the error estimate)");
+  reporter.print_table(
+      "cells/N (nodes)", rows, {"batched", "batched_with_error"},
+      [](const std::string& row) { return "batched/" + row; }, "batched/cells/N (the cost of the error estimate)");
   reporter.print_table(
       "cells/N (nodes)", rows, {"batched", "batched_float"}, [](const std::string& row) { return "batched/" + row; },
       "the double batched/cells/N");

@@ -76,14 +76,6 @@ FLUIDBED_HOST_DEVICE constexpr T tiny_weight_share() {
   return epsilon * epsilon * epsilon;
 }
 
-// The larger of two error estimates, infinite where the new one is not a number (a zero weight
-// or coincident nodes divide by zero).
-template <class T>
-FLUIDBED_HOST_DEVICE T larger_error(const T& so_far, const T& next) {
-  if (!(next <= std::numeric_limits<T>::max())) return std::numeric_limits<T>::infinity();
-  return next > so_far ? next : so_far;
-}
-
 // Whether both estimated errors are within a required relative accuracy.
 template <class T>
 FLUIDBED_HOST_DEVICE bool meets(const RuleError<T>& error, const T& required) {
@@ -93,7 +85,7 @@ FLUIDBED_HOST_DEVICE bool meets(const RuleError<T>& error, const T& required) {
 // Σ_k |h̃_ik m_k| and Σ_k |h_ik m_k| of node i: the sensitivities of w_i x_i and w_i to the moments.
 template <class T>
 struct NodeSensitivity {
-  T node = T(0), weight = T(0);
+  T node, weight;
 };
 
 // On [0, ∞), nodes > 0: H̃_i = P Q_i/Q_i(x_i)² has positive roots only, so its coefficients
@@ -106,31 +98,31 @@ struct NodeSensitivity {
 // factor's root is positive too), so
 //   Σ_k |h_ik| m_k <= Σ_j w_j (B_ij/d_i)² (|1 + 2 ℓ_i'(x_i) x_i| + 2 |ℓ_i'(x_i)| x_j).
 // O(n²) per node, no polynomial formed.
-template <class T, int N>
-FLUIDBED_HOST_DEVICE NodeSensitivity<T> positive_node_sensitivity(const Quadrature<T, N>& q, int i) {
-  using std::abs;
-  const int n = q.size;
-  const T x = q.nodes[i];
-  T d = T(1), slope = T(0);  // Q_i(x_i) and Q_i'(x_i), by the product rule
+// On a scalar or on a lane of cells (V, as lane_ops), from the n nodes x and weights w.
+template <class V>
+FLUIDBED_HOST_DEVICE NodeSensitivity<V> positive_node_sensitivity(const V* x, const V* w, int n, int i) {
+  using ops = lane_ops<V>;
+  using T = typename ops::scalar;
+  const V xi = x[i];
+  V d = ops::constant(T(1)), slope = ops::constant(T(0));  // Q_i(x_i) and Q_i'(x_i), by the product rule
   for (int l = 0; l < n; ++l)
     if (l != i) {
-      slope = slope * (x - q.nodes[l]) + d;
-      d *= x - q.nodes[l];
+      slope = slope * (xi - x[l]) + d;
+      d = d * (xi - x[l]);
     }
-  const T inverse_d = T(1) / d;
-  const T lagrange_slope = T(2) * slope * inverse_d;  // 2 ℓ_i'(x_i)
-  const T constant = abs(T(1) + lagrange_slope * x), linear = abs(lagrange_slope);
-  NodeSensitivity<T> s;
+  const V inverse_d = T(1) / d;
+  const V lagrange_slope = T(2) * slope * inverse_d;  // 2 ℓ_i'(x_i)
+  const V constant = ops::abs(T(1) + lagrange_slope * xi), linear = ops::abs(lagrange_slope);
+  NodeSensitivity<V> s{ops::constant(T(0)), ops::constant(T(0))};
   for (int j = 0; j < n; ++j) {
-    const T xj = q.nodes[j];
-    T others = T(1);  // B_ij
+    V others = ops::constant(T(1));  // B_ij
     for (int l = 0; l < n; ++l)
-      if (l != i) others *= xj + q.nodes[l];
-    s.node += q.weights[j] * (xj + x) * others * others;  // A_j B_ij = (x_j + x_i) B_ij²
-    s.weight += q.weights[j] * others * others * (constant + linear * xj);
+      if (l != i) others = others * (x[j] + x[l]);
+    s.node = s.node + w[j] * (x[j] + xi) * others * others;  // A_j B_ij = (x_j + x_i) B_ij²
+    s.weight = s.weight + w[j] * others * others * (constant + linear * x[j]);
   }
-  s.node *= inverse_d * inverse_d;
-  s.weight *= inverse_d * inverse_d;
+  s.node = s.node * (inverse_d * inverse_d);
+  s.weight = s.weight * (inverse_d * inverse_d);
   return s;
 }
 
@@ -157,7 +149,7 @@ FLUIDBED_HOST_DEVICE NodeSensitivity<T> general_node_sensitivity(std::span<const
   }
   const T inverse_d = T(1) / d;
   const T lagrange_slope = T(2) * slope * inverse_d;  // 2 ℓ_i'(x_i)
-  NodeSensitivity<T> s;
+  NodeSensitivity<T> s{T(0), T(0)};
   for (int k = 0; k < 2 * n; ++k) {
     const T mk = m[std::size_t(k)];
     s.node += abs(node_part[k] * mk);
@@ -166,6 +158,37 @@ FLUIDBED_HOST_DEVICE NodeSensitivity<T> general_node_sensitivity(std::span<const
   s.node *= inverse_d * inverse_d;
   s.weight *= inverse_d * inverse_d;
   return s;
+}
+
+// What turns node i's sensitivities into relative errors: the relative moment perturbation
+// (caller's accuracy plus rounding) and the weight below which no digit is given.
+template <class V>
+struct RuleErrorTerms {
+  V perturbation, tiny_weight;
+};
+
+// The terms of a rule of n nodes with weights w (scalar or lanes, as lane_ops).
+template <class V>
+FLUIDBED_HOST_DEVICE RuleErrorTerms<V> rule_error_terms(const V* w, int n, const typename lane_ops<V>::scalar& moment_accuracy) {
+  using ops = lane_ops<V>;
+  using T = typename ops::scalar;
+  using std::sqrt;
+  V mass = ops::constant(T(0));
+  for (int i = 0; i < n; ++i) mass = mass + ops::abs(w[i]);
+  return {ops::constant(moment_accuracy + inversion_rounding<T>() / sqrt(T(2 * n))), tiny_weight_share<T>() * mass};
+}
+
+// Node i's relative errors from its sensitivities, weight and node scale (the node on [0, ∞), the
+// largest |node| on the line), into the rule's largest so far (scalar or lanes).
+template <class V>
+FLUIDBED_HOST_DEVICE void add_node_error(V& nodes, V& weights, const NodeSensitivity<V>& s, const V& weight,
+                                         const V& node_scale, const RuleErrorTerms<V>& terms) {
+  using ops = lane_ops<V>;
+  using T = typename ops::scalar;
+  const V per_node = T(1) / (ops::abs(weight) * node_scale);  // one division for 1/(w x) and 1/w
+  const V per_weight = per_node * node_scale;
+  nodes = ops::larger_error(nodes, terms.perturbation * s.node * per_node);
+  weights = ops::larger_error(weights, (terms.perturbation * s.weight + terms.tiny_weight) * per_weight);
 }
 
 // The estimate for a rule of n = q.size >= 1 nodes and its 2n moments m, both in the exactly
@@ -189,18 +212,12 @@ FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const 
       largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
     }
   }
-  const T perturbation = moment_accuracy + inversion_rounding<T>() / sqrt(T(2 * n));
+  const RuleErrorTerms<T> terms = rule_error_terms(q.weights.data(), n, moment_accuracy);
   RuleError<T> error{T(0), T(0)};
-  T mass = T(0);
-  for (int i = 0; i < n; ++i) mass += abs(q.weights[i]);
-  const T smallest_share = tiny_weight_share<T>();
   for (int i = 0; i < n; ++i) {
-    const NodeSensitivity<T> s = positive ? positive_node_sensitivity(q, i) : general_node_sensitivity(m, q, p, i);
-    const T node_scale = positive ? abs(q.nodes[i]) : largest;
-    const T per_node = T(1) / (abs(q.weights[i]) * node_scale);  // one division for 1/(w x) and 1/w
-    const T per_weight = per_node * node_scale;
-    error.nodes = larger_error(error.nodes, perturbation * s.node * per_node);
-    error.weights = larger_error(error.weights, (perturbation * s.weight + smallest_share * mass) * per_weight);
+    const NodeSensitivity<T> s = positive ? positive_node_sensitivity(q.nodes.data(), q.weights.data(), n, i)
+                                          : general_node_sensitivity(m, q, p, i);
+    add_node_error(error.nodes, error.weights, s, q.weights[i], positive ? T(abs(q.nodes[i])) : largest, terms);
   }
   return error;
 }

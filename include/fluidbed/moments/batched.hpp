@@ -81,6 +81,10 @@ struct lane_ops<Eigen::Array<T, L, 1>> {
   static V sqrt(const V& x) { return x.sqrt(); }
   static V abs(const V& x) { return x.abs(); }
   static V min(const V& x, const scalar& bound) { return x.min(bound); }
+  static V constant(const scalar& c) { return V::Constant(c); }
+  static V larger_error(const V& so_far, const V& next) {
+    return (next <= std::numeric_limits<T>::max()).select((next > so_far).select(next, so_far), std::numeric_limits<T>::infinity());
+  }
   // No comparison or branch per lane, so that the kernels stay vector code once inlined and
   // unrolled: copysign is bit arithmetic, and the choice is an exact blend of finite values
   // (a·1 + b·0 = a); a lane holding a non-finite value is discarded anyway.
@@ -520,31 +524,79 @@ void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& ou
     if (queues.queues[k - 4].size > 0) solve_reduced_queue<support>(queues, k, in, out);
 }
 
+// The error estimate of cell c's rule as invert() makes it, per cell.
+template <class T, int N>
+RuleError<T> cell_rule_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t c,
+                             const InversionOptions& options) {
+  const std::array<T, 2 * N> cell = cell_moments(in, c);
+  Quadrature<T, N> q;
+  q.size = out.sizes[c];
+  for (int i = 0; i < q.size; ++i) {
+    q.nodes[i] = out.nodes[i][c];
+    q.weights[i] = out.weights[i][c];
+  }
+  return estimated_error(std::span<const T>(cell).first(std::size_t(2 * q.size)), q, options.support,
+                         T(options.moment_accuracy));
+}
+
+// The estimates of L cells from `first` on whose rules have all N nodes, on [0, ∞): each rule
+// brought to its moments' exact scales as estimated_error() does (per cell), then everything on
+// lanes, with the same operations as per cell (so the same bits without contraction).
+template <class T, int N>
+void lane_rule_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t first,
+                      const InversionOptions& options, RuleError<T>* errors) {
+  using V = Lanes<T>;
+  constexpr int L = int(V::SizeAtCompileTime);
+  V x[N], w[N];
+  for (int lane = 0; lane < L; ++lane) {
+    const std::size_t c = first + std::size_t(lane);
+    T leading[3];  // what scaling_of reads: m_0, m_1 and, with four or more moments, m_2
+    constexpr int read = 2 * N < 3 ? 2 * N : 3;
+    for (int k = 0; k < read; ++k) leading[k] = in.moments[k][c];
+    const MomentScaling s = scaling_of(std::span<const T>(leading, read));
+    const T length = power_of_two<T>(-s.length_exponent), weight = power_of_two<T>(-s.weight_exponent);
+    for (int i = 0; i < N; ++i) {
+      x[i][lane] = times_power_of_two(out.nodes[i][c], length, -s.length_exponent);
+      w[i][lane] = times_power_of_two(out.weights[i][c], weight, -s.weight_exponent);
+    }
+  }
+  const RuleErrorTerms<V> terms = rule_error_terms(w, N, T(options.moment_accuracy));
+  V nodes = V::Zero(), weights = V::Zero();
+  for (int i = 0; i < N; ++i)
+    add_node_error(nodes, weights, positive_node_sensitivity(x, w, N, i), w[i], V(x[i].abs()), terms);
+  for (int lane = 0; lane < L; ++lane) errors[lane] = {nodes[lane], weights[lane]};
+}
+
 // The error estimate of every cell's rule as invert() makes it with `options`, after the
 // rules are in place: stored in the error spans when they are given, and, with a required
-// accuracy, a rule that misses it marked inaccurate. Per cell (O(n²) per node, from the rule).
+// accuracy, a rule that misses it marked inaccurate. On lanes for runs of L cells with all N
+// nodes on [0, ∞), per cell otherwise.
 template <class T, int N>
 void estimate_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, const InversionOptions& options) {
+  constexpr std::size_t L = std::size_t(batch_lanes<T>);
   const bool store = !out.node_errors.empty();
-  for (std::size_t c = 0; c < in.cells(); ++c) {
-    RuleError<T> error;
-    const bool has_rule = out.status[c] == InversionStatus::ok || out.status[c] == InversionStatus::reduced;
-    if (has_rule) {
-      const std::array<T, 2 * N> cell = cell_moments(in, c);
-      Quadrature<T, N> q;
-      q.size = out.sizes[c];
-      for (int i = 0; i < q.size; ++i) {
-        q.nodes[i] = out.nodes[i][c];
-        q.weights[i] = out.weights[i][c];
-      }
-      error = estimated_error(std::span<const T>(cell).first(std::size_t(2 * q.size)), q, options.support,
-                              T(options.moment_accuracy));
-      if (options.required_accuracy > 0 && !meets(error, T(options.required_accuracy)))
+  const auto has_rule = [&out](std::size_t c) {
+    return out.status[c] == InversionStatus::ok || out.status[c] == InversionStatus::reduced;
+  };
+  RuleError<T> errors[L];
+  for (std::size_t first = 0; first < in.cells(); first += L) {
+    const std::size_t count = in.cells() - first < L ? in.cells() - first : L;
+    bool full = count == L && options.support == Support::positive_half_line;
+    for (std::size_t lane = 0; lane < count && full; ++lane) full = out.status[first + lane] == InversionStatus::ok;
+    if (full) lane_rule_errors(in, out, first, options, errors);
+    for (std::size_t lane = 0; lane < count; ++lane) {
+      const std::size_t c = first + lane;
+      RuleError<T> error;  // −1: no rule
+      if (full)
+        error = errors[lane];
+      else if (has_rule(c))
+        error = cell_rule_error(in, out, c, options);
+      if (has_rule(c) && options.required_accuracy > 0 && !meets(error, T(options.required_accuracy)))
         out.status[c] = InversionStatus::inaccurate;
-    }
-    if (store) {
-      out.node_errors[c] = error.nodes;
-      out.weight_errors[c] = error.weights;
+      if (store) {
+        out.node_errors[c] = error.nodes;
+        out.weight_errors[c] = error.weights;
+      }
     }
   }
 }

@@ -287,6 +287,12 @@ struct lane_ops {
     return abs(x);
   }
   FLUIDBED_HOST_DEVICE static V min(const V& x, const scalar& bound) { return bound < x ? V(bound) : x; }
+  FLUIDBED_HOST_DEVICE static V constant(const scalar& c) { return c; }
+  // The larger of two error estimates (accuracy.hpp), +∞ where `next` is NaN or +∞.
+  FLUIDBED_HOST_DEVICE static V larger_error(const V& so_far, const V& next) {
+    if (!(next <= std::numeric_limits<V>::max())) return std::numeric_limits<V>::infinity();
+    return next > so_far ? next : so_far;
+  }
   // +1 or −1 (+1 for zero).
   FLUIDBED_HOST_DEVICE static V sign(const V& x) { return x < V(0) ? V(-1) : V(1); }
   // a where s > 0, else b (s is a sign from sign()).
