@@ -630,8 +630,8 @@ template <class T, int N>
 
 // The same with InversionOptions: its support, and the error estimate (estimate_error,
 // moment_accuracy, required_accuracy) as invert() makes it, from each cell's rule; algorithm and
-// solver are those of the batched path (Wheeler, the solvers above). The estimate is made per
-// cell after the lanes, at about the per-cell cost of estimated_error().
+// solver are those of the batched path (Wheeler, the solvers above). The estimate is made after
+// the lanes: on lanes for runs of cells with all N nodes on [0, ∞), per cell otherwise.
 template <class T, int N>
 [[nodiscard]] bool invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
                                   const InversionOptions& options) {
