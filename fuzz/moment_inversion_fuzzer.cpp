@@ -742,6 +742,26 @@ void batched_checks(Input& in, std::span<const T> base, Support support) {
                  text(m).c_str());
     }
   }
+  // With the error estimate (on lanes or per cell): the same rules and statuses, and an estimate
+  // >= 0 or +∞ for every cell with a rule, −1 for the others.
+  const std::vector<T> plain_nodes = x, plain_weights = w;
+  const std::vector<InversionStatus> plain_status = status;
+  std::vector<T> node_errors(static_cast<std::size_t>(cells)), weight_errors(node_errors);
+  out.node_errors = node_errors;
+  out.weight_errors = weight_errors;
+  FUZZ_CHECK(invert_batched(batch, out, InversionOptions{.support = support, .estimate_error = true}),
+             "invert_batched<%d> with estimate: refused %d cells", N, cells);
+  for (int c = 0; c < cells; ++c) {
+    FUZZ_CHECK(status[c] == plain_status[c], "invert_batched<%d> with estimate: cell %d status %s, without %s", N, c,
+               status_name(status[c]), status_name(plain_status[c]));
+    for (const T e : {node_errors[std::size_t(c)], weight_errors[std::size_t(c)]})
+      FUZZ_CHECK(has_nodes(status[c]) ? e >= T(0) : e == T(-1),
+                 "invert_batched<%d> with estimate: cell %d error %.17g with status %s", N, c, double(e),
+                 status_name(status[c]));
+  }
+  for (std::size_t k = 0; k < x.size(); ++k)
+    FUZZ_CHECK(same_bits(x[k], plain_nodes[k]) && same_bits(w[k], plain_weights[k]),
+               "invert_batched<%d> with estimate: entry %zu of the rules changed", N, k);
 }
 
 // The compile-time capacity N = n: the fixed-size entry points, where every loop bound is tight.
