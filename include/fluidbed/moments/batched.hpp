@@ -543,7 +543,7 @@ RuleError<T> cell_rule_error(const MomentBatch<T, N>& in, const QuadratureBatch<
 // brought to its moments' exact scales as estimated_error() does (per cell), then everything on
 // lanes, with the same operations as per cell (so the same bits without contraction).
 template <class T, int N>
-void lane_rule_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t first,
+FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t first,
                       const InversionOptions& options, RuleError<T>* errors) {
   using V = Lanes<T>;
   constexpr int L = int(V::SizeAtCompileTime);
@@ -562,8 +562,9 @@ void lane_rule_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& 
   }
   const RuleErrorTerms<V> terms = rule_error_terms(w, N, T(options.moment_accuracy));
   V nodes = V::Zero(), weights = V::Zero();
-  for (int i = 0; i < N; ++i)
-    add_node_error(nodes, weights, positive_node_sensitivity(x, w, N, i), w[i], V(x[i].abs()), terms);
+  NodeSensitivity<V> sensitivity[N];
+  positive_sensitivities(x, w, N, sensitivity);
+  for (int i = 0; i < N; ++i) add_node_error(nodes, weights, sensitivity[i], w[i], V(x[i].abs()), terms);
   for (int lane = 0; lane < L; ++lane) errors[lane] = {nodes[lane], weights[lane]};
 }
 
