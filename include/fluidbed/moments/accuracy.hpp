@@ -104,6 +104,7 @@ template <class V, int N>
 FLUIDBED_HOST_DEVICE void positive_sensitivities(const V* x, const V* w, int n, NodeSensitivity<V> (&s)[N]) {
   using ops = lane_ops<V>;
   using T = typename ops::scalar;
+  n = n < N ? n : N;  // as rule_error_terms
   V constant[N], linear[N], inverse_square[N];
   for (int i = 0; i < n; ++i) {
     V d = ops::constant(T(1)), slope = ops::constant(T(0));  // Q_i(x_i) and Q_i'(x_i), by the product rule
@@ -179,12 +180,13 @@ struct RuleErrorTerms {
   V perturbation, tiny_weight;
 };
 
-// The terms of a rule of n nodes with weights w (scalar or lanes, as lane_ops).
-template <class V>
+// The terms of a rule of n <= N nodes with weights w (scalar or lanes, as lane_ops).
+template <int N, class V>
 FLUIDBED_HOST_DEVICE RuleErrorTerms<V> rule_error_terms(const V* w, int n, const typename lane_ops<V>::scalar& moment_accuracy) {
   using ops = lane_ops<V>;
   using T = typename ops::scalar;
   using std::sqrt;
+  n = n < N ? n : N;  // (the callers' n is; GCC 12 -O3 warns of reads beyond w unless it sees so)
   V mass = ops::constant(T(0));
   for (int i = 0; i < n; ++i) mass = mass + ops::abs(w[i]);
   return {ops::constant(moment_accuracy + inversion_rounding<T>() / sqrt(T(2 * n))), tiny_weight_share<T>() * mass};
@@ -224,7 +226,7 @@ FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const 
       largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
     }
   }
-  const RuleErrorTerms<T> terms = rule_error_terms(q.weights.data(), n, moment_accuracy);
+  const RuleErrorTerms<T> terms = rule_error_terms<N>(q.weights.data(), n, moment_accuracy);
   NodeSensitivity<T> s[N];
   if (positive)
     positive_sensitivities(q.nodes.data(), q.weights.data(), n, s);

@@ -560,7 +560,7 @@ FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const MomentBatch<T, N>& in, cons
       w[i][lane] = times_power_of_two(out.weights[i][c], weight, -s.weight_exponent);
     }
   }
-  const RuleErrorTerms<V> terms = rule_error_terms(w, N, T(options.moment_accuracy));
+  const RuleErrorTerms<V> terms = rule_error_terms<N>(w, N, T(options.moment_accuracy));
   V nodes = V::Zero(), weights = V::Zero();
   NodeSensitivity<V> sensitivity[N];
   positive_sensitivities(x, w, N, sensitivity);
