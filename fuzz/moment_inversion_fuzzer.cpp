@@ -57,8 +57,6 @@ bool valid(InversionStatus s) {
          s == InversionStatus::eigen_failure || s == InversionStatus::inaccurate;
 }
 
-bool has_nodes(InversionStatus s) { return s == InversionStatus::ok || s == InversionStatus::reduced; }
-
 // For the violation messages only (built when a check fails).
 template <class T>
 std::string text(std::span<const T> values) {
@@ -133,7 +131,7 @@ void check_inversion(const char* entry, const InversionResult<T, N>& r, std::spa
     static bool printed = false;  // documented as never observed: worth knowing, not a violation
     fluidbed::fuzz::note_once("invert: eigen_failure observed", printed);
   }
-  if (!has_nodes(r.status)) {
+  if (!has_rule(r.status)) {
     FUZZ_CHECK(r.quadrature.size == 0, "%s: status %s with %d nodes; moments %s", entry, status_name(r.status),
                r.quadrature.size, text(m).c_str());
     return;
@@ -170,10 +168,13 @@ void check_estimate(const InversionResult<T, N>& plain, std::span<const T> m, co
                "invert with estimate: node %d differs; moments %s", i, text(m).c_str());
   const T e[2] = {r.error.nodes, r.error.weights};
   for (const T& x : e)
-    FUZZ_CHECK(has_nodes(r.status) ? x >= T(0) : x == T(-1),
+    FUZZ_CHECK(has_rule(r.status) ? x >= T(0) : x == T(-1),
                "invert with estimate: error estimate %.17g with status %s; moments %s", double(x),
                status_name(r.status), text(m).c_str());
-  if (!has_nodes(r.status)) return;
+  FUZZ_CHECK(r.status == InversionStatus::reduced ? r.error.reduction >= T(0) : r.error.reduction == T(-1),
+             "invert with estimate: reduction error %.17g with status %s; moments %s", double(r.error.reduction),
+             status_name(r.status), text(m).c_str());
+  if (!has_rule(r.status)) return;
   asked.required_accuracy = double(std::max(r.error.nodes, r.error.weights)) / 2;
   if (!(asked.required_accuracy > 0) || !std::isfinite(asked.required_accuracy)) return;
   const InversionResult<T, N> strict = invert<T, N>(m, asked);
@@ -421,10 +422,10 @@ void realizability_checks(const Problem<T>& p, std::span<const T> m, const Inver
   }
   if (m.size() % 2 == 0 && wheeler.status != InversionStatus::eigen_failure && !range_status)
     FUZZ_CHECK(report.status == wheeler.status &&
-                   (!has_nodes(report.status) || report.realizable_nodes == wheeler.realizable_nodes),
+                   (!has_rule(report.status) || report.realizable_nodes == wheeler.realizable_nodes),
                "realizability: %s with %d nodes, invert: %s with %d; moments %s", status_name(report.status),
                report.realizable_nodes, status_name(wheeler.status), wheeler.realizable_nodes, text(m).c_str());
-  if (has_nodes(report.status))
+  if (has_rule(report.status))
     for (int k = 0; k < report.realizable_nodes; ++k)
       FUZZ_CHECK(is_finite(report.recurrence.alpha[k]) && is_finite(report.recurrence.beta[k]),
                  "realizability: recurrence level %d not finite with status %s; moments %s", k, status_name(report.status),
@@ -498,7 +499,7 @@ void adaptive_checks(Input& in, const Problem<T>& p, std::span<const T> m) {
   const AdaptiveInversionResult<T, kCapacity> r = invert_adaptive<T, kCapacity>(m, o);
   const char* entry = "invert_adaptive";
   FUZZ_CHECK(valid(r.status), "%s: status %d", entry, int(r.status));
-  if (!has_nodes(r.status)) {
+  if (!has_rule(r.status)) {
     FUZZ_CHECK(r.quadrature.size == 0, "%s: status %s with %d nodes; moments %s", entry, status_name(r.status),
                r.quadrature.size, text(m).c_str());
   } else {
@@ -587,7 +588,7 @@ void correction_checks(Input& in, std::span<const T> m) {
     AdaptiveOptions<T> a;
     a.inversion.support = Support::positive_half_line;
     const AdaptiveInversionResult<T, kCapacity> r = invert_adaptive<T, kCapacity>(out, a);
-    FUZZ_CHECK(has_nodes(r.status) || r.status == InversionStatus::eigen_failure,
+    FUZZ_CHECK(has_rule(r.status) || r.status == InversionStatus::eigen_failure,
                "correct_moments: status %s, yet the corrected set inverts to %s; moments %s -> %s", name(c.status),
                status_name(r.status), text(m).c_str(), text(out).c_str());
   }
@@ -746,18 +747,24 @@ void batched_checks(Input& in, std::span<const T> base, Support support) {
   // >= 0 or +∞ for every cell with a rule, −1 for the others.
   const std::vector<T> plain_nodes = x, plain_weights = w;
   const std::vector<InversionStatus> plain_status = status;
-  std::vector<T> node_errors(static_cast<std::size_t>(cells)), weight_errors(node_errors);
+  std::vector<T> node_errors(static_cast<std::size_t>(cells));
+  std::vector<T> weight_errors(node_errors), reduction_errors(node_errors);
   out.node_errors = node_errors;
   out.weight_errors = weight_errors;
+  out.reduction_errors = reduction_errors;
   FUZZ_CHECK(invert_batched(batch, out, InversionOptions{.support = support, .estimate_error = true}),
              "invert_batched<%d> with estimate: refused %d cells", N, cells);
   for (int c = 0; c < cells; ++c) {
     FUZZ_CHECK(status[c] == plain_status[c], "invert_batched<%d> with estimate: cell %d status %s, without %s", N, c,
                status_name(status[c]), status_name(plain_status[c]));
     for (const T e : {node_errors[std::size_t(c)], weight_errors[std::size_t(c)]})
-      FUZZ_CHECK(has_nodes(status[c]) ? e >= T(0) : e == T(-1),
+      FUZZ_CHECK(has_rule(status[c]) ? e >= T(0) : e == T(-1),
                  "invert_batched<%d> with estimate: cell %d error %.17g with status %s", N, c, double(e),
                  status_name(status[c]));
+    const T reduction = reduction_errors[std::size_t(c)];
+    FUZZ_CHECK(status[c] == InversionStatus::reduced ? reduction >= T(0) : reduction == T(-1),
+               "invert_batched<%d> with estimate: cell %d reduction error %.17g with status %s", N, c,
+               double(reduction), status_name(status[c]));
   }
   for (std::size_t k = 0; k < x.size(); ++k)
     FUZZ_CHECK(same_bits(x[k], plain_nodes[k]) && same_bits(w[k], plain_weights[k]),
@@ -776,10 +783,10 @@ void exact_capacity(Input& in, const Problem<T>& p, std::span<const T> m) {
   AdaptiveOptions<T> o;
   o.inversion = p.options;
   const AdaptiveInversionResult<T, N> a = invert_adaptive<N>(fixed, o);
-  FUZZ_CHECK(valid(a.status) && has_nodes(a.status) == (a.quadrature.size > 0),
+  FUZZ_CHECK(valid(a.status) && has_rule(a.status) == (a.quadrature.size > 0),
              "invert_adaptive<N>(array): status %s with %d nodes; moments %s", status_name(a.status), a.quadrature.size,
              text(m).c_str());
-  if (has_nodes(a.status)) check_rule("invert_adaptive<N>(array)", a.quadrature, m, p.support);
+  if (has_rule(a.status)) check_rule("invert_adaptive<N>(array)", a.quadrature, m, p.support);
   if (m[0] > T(0) && is_finite(m[0])) {  // recurrence(): m_0 > 0 finite is its only precondition
     const Recurrence<T, N> w = recurrence<T, N>(m, RecurrenceAlgorithm::wheeler);
     const Recurrence<T, N> pd = recurrence<T, N>(m, RecurrenceAlgorithm::product_difference);

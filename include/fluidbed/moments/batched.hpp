@@ -13,7 +13,8 @@
 //   3. realizability (every β_k > 0; on [0, ∞) every ζ_j > 0) as a per-cell mask;
 //   4. nodes and weights: the closed forms of jacobi_eigen.hpp for n <= 2, its fixed-cost
 //      three-node solver for n = 3, the Golub–Welsch QL on lanes for n >= 4;
-//   5. exact unscaling.
+//   5. with InversionOptions asking for it, the error estimate of accuracy.hpp on [0, ∞);
+//   6. exact unscaling.
 // A cell whose mask fails anywhere (empty, non-finite, not fully realizable, scale factors
 // out of range, non-finite result) is inverted again by the per-cell pipeline, so that its
 // status, node count and every special case are exactly those of invert(); a rule it reduces to
@@ -59,9 +60,10 @@ struct MomentBatch {
 
 // Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
 // weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
-// Every span must have as many entries as the batch has cells, except node_errors and
-// weight_errors, which may be empty: given, they receive InversionResult::error of each cell
-// (−1 where no estimate was asked for or the cell has no rule).
+// Every span must have as many entries as the batch has cells, except node_errors,
+// weight_errors and reduction_errors, which may be empty: given, they receive
+// InversionResult::error of each cell (its nodes, weights and reduction; −1 where no estimate was
+// asked for or the cell has no rule, or, for the reduction, is not reduced).
 template <class T, int N>
 struct QuadratureBatch {
   std::array<std::span<T>, N> nodes{};
@@ -70,6 +72,7 @@ struct QuadratureBatch {
   std::span<InversionStatus> status;
   std::span<T> node_errors;
   std::span<T> weight_errors;
+  std::span<T> reduction_errors;
 };
 
 namespace detail {
@@ -82,8 +85,9 @@ struct lane_ops<Eigen::Array<T, L, 1>> {
   static V abs(const V& x) { return x.abs(); }
   static V min(const V& x, const scalar& bound) { return x.min(bound); }
   static V constant(const scalar& c) { return V::Constant(c); }
-  static V larger_error(const V& so_far, const V& next) {
-    return (next <= std::numeric_limits<T>::max()).select((next > so_far).select(next, so_far), std::numeric_limits<T>::infinity());
+  static V larger_error(const V& so_far, const V& next) {  // as the scalar one: NaN and ∞ give ∞
+    const V larger = (next > so_far).select(next, so_far);
+    return (next <= std::numeric_limits<T>::max()).select(larger, std::numeric_limits<T>::infinity());
   }
   // No comparison or branch per lane, so that the kernels stay vector code once inlined and
   // unrolled: copysign is bit arithmetic, and the choice is an exact blend of finite values
@@ -275,10 +279,12 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<
   return s;
 }
 
-// Steps 1–5 of the batched pipeline on one lane value of cells: nodes and weights in x and w,
-// and the guards that tell which lanes they are valid for.
+// Steps 1–4 of the batched pipeline on one lane value of cells: nodes and weights in scaled
+// units in x and w, the guards that tell which lanes they are valid for, and the scales that
+// unscale_lanes() takes them back to the caller's units with.
 template <Support support, class V, int N>
-FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N], V (&w)[N], LaneGuards<V>& guards) {
+FLUIDBED_BATCHED_FLATTEN LaneScales<V> invert_lane_values(const V (&m)[2 * N], V (&x)[N], V (&w)[N],
+                                                          LaneGuards<V>& guards) {
   using T = typename V::Scalar;
   constexpr int L = int(V::SizeAtCompileTime);
   for (int k = 0; k < 2 * N; ++k) guards.require_finite(m[k]);
@@ -339,7 +345,12 @@ FLUIDBED_BATCHED_FLATTEN void invert_lane_values(const V (&m)[2 * N], V (&x)[N],
       }
     }
   }
-  // 5. Unscaling.
+  return s;
+}
+
+// Step 5: the rules of a lane value in the caller's units.
+template <class V, int N>
+void unscale_lanes(V (&x)[N], V (&w)[N], const LaneScales<V>& s, LaneGuards<V>& guards) {
   for (int k = 0; k < N; ++k) {
     x[k] *= s.length;
     w[k] *= s.weight;
@@ -367,12 +378,74 @@ std::array<T, 2 * N> cell_moments(const MomentBatch<T, N>& in, std::size_t c) {
   return cell;
 }
 
-// Cell c inverted by invert() alone, its rule and status stored.
-template <Support support, class T, int N>
-void invert_cell_alone(const MomentBatch<T, N>& in, std::size_t c, const QuadratureBatch<T, N>& out) {
+// Cell c's error estimate into the error spans, when they are given.
+template <class T, int N>
+void store_error(const QuadratureBatch<T, N>& out, std::size_t c, const RuleError<T>& error) {
+  if (!out.node_errors.empty()) {
+    out.node_errors[c] = error.nodes;
+    out.weight_errors[c] = error.weights;
+  }
+  if (!out.reduction_errors.empty()) out.reduction_errors[c] = error.reduction;
+}
+
+// Cell c's estimate (−1 where none was made) stored, and its rule marked inaccurate where the
+// estimate misses the options' requirement.
+template <class T, int N>
+void record_error(const QuadratureBatch<T, N>& out, std::size_t c, const RuleError<T>& error,
+                  const InversionOptions& options) {
+  if (has_rule(out.status[c]) && misses_requirement(error, options)) out.status[c] = InversionStatus::inaccurate;
+  store_error(out, c, error);
+}
+
+// Cell c's stored rule.
+template <class T, int N>
+Quadrature<T, N> stored_rule(const QuadratureBatch<T, N>& out, std::size_t c) {
+  Quadrature<T, N> q;
+  q.size = out.sizes[c];
+  for (int i = 0; i < q.size; ++i) {
+    q.nodes[i] = out.nodes[i][c];
+    q.weights[i] = out.weights[i][c];
+  }
+  return q;
+}
+
+// Cell c's first-order estimate (from the lanes, or per cell) completed as invert() completes it:
+// beyond first order, the vertex rules (add_vertex_changes); then recorded.
+template <class T, int N>
+void finish_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t c, RuleError<T> error,
+                  const InversionOptions& options) {
+  if (has_rule(out.status[c]) && beyond_first_order(error, options)) {
+    const std::array<T, 2 * N> cell = cell_moments(in, c);
+    add_vertex_changes(std::span<const T>(cell).first(std::size_t(2 * out.sizes[c])), stored_rule(out, c), options,
+                       error);
+  }
+  record_error(out, c, error, options);
+}
+
+// Cell c's stored rule estimated per cell, as invert() with the options estimates it (from the
+// cell's moments: estimated_error(), and reduction_error() for a reduced rule), and recorded.
+template <class T, int N>
+void estimate_cell_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t c,
+                         const InversionOptions& options) {
+  RuleError<T> error;  // −1: not asked for, or no rule
+  if (wants_estimate(options) && has_rule(out.status[c])) {
+    const std::array<T, 2 * N> cell = cell_moments(in, c);
+    error = estimated_error(std::span<const T>(cell).first(std::size_t(2 * out.sizes[c])), stored_rule(out, c),
+                            options.support, T(options.moment_accuracy));
+    if (out.status[c] == InversionStatus::reduced)
+      error.reduction = reduction_error<T, N>(std::span<const T>(cell), options.support, T(options.moment_accuracy));
+  }
+  finish_error(in, out, c, error, options);
+}
+
+// Cell c inverted by invert() alone with the options, its rule, status and estimate stored.
+template <class T, int N>
+void invert_cell_alone(const MomentBatch<T, N>& in, std::size_t c, const QuadratureBatch<T, N>& out,
+                       const InversionOptions& options) {
   const std::array<T, 2 * N> cell = cell_moments(in, c);
-  const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell), {.support = support});
+  const InversionResult<T, N> result = invert<T, N>(std::span<const T>(cell), options);
   store_rule(out, c, result.quadrature, result.status);
+  store_error(out, c, result.error);
 }
 
 // Cells the lanes did not validate whose rule invert() reduces to 4 … N − 1 nodes (sets that
@@ -392,11 +465,11 @@ struct ReducedRuleQueues {
   Queue queues[N > 5 ? N - 4 : 1];  // queues[k − 4] for k nodes
 };
 
-// Solves a queue of K-node recurrences on lanes and stores the rules; a cell whose lane or unscaled
-// rule is not finite is inverted again by invert(). Empties the queue.
-template <Support support, int K, class T, int N>
+// Solves a queue of K-node recurrences on lanes and stores the rules and their estimates; a cell
+// whose lane or unscaled rule is not finite is inverted again by invert(). Empties the queue.
+template <int K, class T, int N>
 void solve_reduced_queue(typename ReducedRuleQueues<T, N>::Queue& queue, const MomentBatch<T, N>& in,
-                         const QuadratureBatch<T, N>& out) {
+                         const QuadratureBatch<T, N>& out, const InversionOptions& options) {
   using V = Lanes<T>;
   V alpha[K], beta[K], x[K], w[K];
   for (int k = 0; k < K; ++k) {
@@ -421,32 +494,34 @@ void solve_reduced_queue(typename ReducedRuleQueues<T, N>::Queue& queue, const M
       unscale(q, queue.scaling[i]);
       valid = finite_rule(q);
     }
-    if (valid)
+    if (valid) {
       store_rule(out, queue.cell[i], q, InversionStatus::reduced);
-    else
-      invert_cell_alone<support>(in, queue.cell[i], out);
+      estimate_cell_error(in, out, queue.cell[i], options);
+    } else {
+      invert_cell_alone(in, queue.cell[i], out, options);
+    }
   }
   queue.size = 0;
 }
 
 // The queue of k nodes, k = K … N − 1, solved (a run-time count to the compile-time K).
-template <Support support, class T, int N, int K = 4>
+template <class T, int N, int K = 4>
 void solve_reduced_queue(ReducedRuleQueues<T, N>& queues, int k, const MomentBatch<T, N>& in,
-                         const QuadratureBatch<T, N>& out) {
+                         const QuadratureBatch<T, N>& out, const InversionOptions& options) {
   if constexpr (K < N) {
     if (k == K)
-      solve_reduced_queue<support, K, T, N>(queues.queues[K - 4], in, out);
+      solve_reduced_queue<K, T, N>(queues.queues[K - 4], in, out, options);
     else
-      solve_reduced_queue<support, T, N, K + 1>(queues, k, in, out);
+      solve_reduced_queue<T, N, K + 1>(queues, k, in, out, options);
   }
 }
 
 // A cell the lanes did not validate: invert() decides its status, size and rule, except that a
-// rule reduced to 4 … N − 1 nodes is queued (its status and size stored now, its nodes when its
-// queue is solved).
+// rule reduced to 4 … N − 1 nodes is queued (its status and size stored now, its nodes and
+// estimate when its queue is solved).
 template <Support support, class T, int N>
 void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T, N>& queues,
-                 const QuadratureBatch<T, N>& out) {
+                 const QuadratureBatch<T, N>& out, const InversionOptions& options) {
   const std::array<T, 2 * N> cell = cell_moments(in, c);
   const std::span<const T> moments(cell);
   Recurrence<T, N> reduced;
@@ -460,7 +535,10 @@ void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T
         return solve_recurrence(r, q, EigenSolver::automatic);
       });
   store_rule(out, c, result.quadrature, result.status);
-  if (reduced.size == 0 || result.status != InversionStatus::reduced) return;
+  if (reduced.size == 0 || result.status != InversionStatus::reduced) {
+    estimate_cell_error(in, out, c, options);
+    return;
+  }
   auto& queue = queues.queues[reduced.size - 4];
   const int i = queue.size++;
   for (int k = 0; k < reduced.size; ++k) {
@@ -469,14 +547,29 @@ void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T
   }
   queue.cell[i] = c;
   queue.scaling[i] = scaling_of(moments);  // invert_with's (scaled_moments)
-  if (queue.size == ReducedRuleQueues<T, N>::L) solve_reduced_queue<support>(queues, reduced.size, in, out);
+  if (queue.size == ReducedRuleQueues<T, N>::L) solve_reduced_queue(queues, reduced.size, in, out, options);
+}
+
+// The estimates of the N-node rules of a lane value on [0, ∞), in scaled units (x, w), with the
+// same operations as invert() per cell: the same bits where the rules are (N <= 2, no
+// contraction).
+template <class V, int N, class T = typename V::Scalar>
+FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const V (&x)[N], const V (&w)[N], const T& moment_accuracy,
+                                               RuleError<T>* errors) {
+  const RuleErrorTerms<V> terms = rule_error_terms<N>(w, N, moment_accuracy);
+  V nodes = V::Zero(), weights = V::Zero();
+  NodeSensitivity<V> sensitivity[N];
+  positive_sensitivities(x, w, N, sensitivity);
+  for (int i = 0; i < N; ++i) add_node_error(nodes, weights, sensitivity[i], w[i], V(x[i].abs()), terms);
+  for (int lane = 0; lane < int(V::SizeAtCompileTime); ++lane) errors[lane] = {nodes[lane], weights[lane]};
 }
 
 // Inverts `count` <= L cells from cell `first` on: the lane kernel, then invert_cell() for every
-// cell it did not validate.
+// cell it did not validate. The estimates of the validated rules are made on the lanes, before
+// unscaling, on [0, ∞), and per cell on the real line (its sensitivities need the moments).
 template <Support support, class T, int N>
 void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, ReducedRuleQueues<T, N>& queues,
-                  const QuadratureBatch<T, N>& out) {
+                  const QuadratureBatch<T, N>& out, const InversionOptions& options) {
   using V = Lanes<T>;
   constexpr int L = int(V::SizeAtCompileTime);
   V m[2 * N];
@@ -490,7 +583,11 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, Red
   }
   V x[N], w[N];
   LaneGuards<V> guards;
-  invert_lane_values<support>(m, x, w, guards);
+  const LaneScales<V> scales = invert_lane_values<support>(m, x, w, guards);
+  constexpr bool errors_on_lanes = support == Support::positive_half_line;
+  RuleError<T> errors[L];  // −1: not asked for
+  if (errors_on_lanes && wants_estimate(options)) lane_rule_errors(x, w, T(options.moment_accuracy), errors);
+  unscale_lanes(x, w, scales, guards);
   for (int k = 0; k < N; ++k) {
     if (count == L) {
       Eigen::Map<V>(out.nodes[k].data() + first) = x[k];
@@ -507,108 +604,35 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, Red
     if (guards.passes(i)) {
       out.sizes[c] = N;
       out.status[c] = InversionStatus::ok;
+      if (errors_on_lanes)
+        finish_error(in, out, c, errors[i], options);
+      else
+        estimate_cell_error(in, out, c, options);
     } else {
-      invert_cell<support>(in, c, queues, out);
+      invert_cell<support>(in, c, queues, out, options);
     }
   }
 }
 
 template <Support support, class T, int N>
-void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
+void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, const InversionOptions& options) {
   constexpr std::size_t L = std::size_t(batch_lanes<T>);
   const std::size_t cells = in.cells();
   ReducedRuleQueues<T, N> queues;
   for (std::size_t first = 0; first < cells; first += L)
-    invert_lanes<support>(in, first, int(cells - first < L ? cells - first : L), queues, out);
+    invert_lanes<support>(in, first, int(cells - first < L ? cells - first : L), queues, out, options);
   for (int k = 4; k < N; ++k)
-    if (queues.queues[k - 4].size > 0) solve_reduced_queue<support>(queues, k, in, out);
-}
-
-// The error estimate of cell c's rule as invert() makes it, per cell.
-template <class T, int N>
-RuleError<T> cell_rule_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t c,
-                             const InversionOptions& options) {
-  const std::array<T, 2 * N> cell = cell_moments(in, c);
-  Quadrature<T, N> q;
-  q.size = out.sizes[c];
-  for (int i = 0; i < q.size; ++i) {
-    q.nodes[i] = out.nodes[i][c];
-    q.weights[i] = out.weights[i][c];
-  }
-  return estimated_error(std::span<const T>(cell).first(std::size_t(2 * q.size)), q, options.support,
-                         T(options.moment_accuracy));
-}
-
-// The estimates of L cells from `first` on whose rules have all N nodes, on [0, ∞): each rule
-// brought to its moments' exact scales as estimated_error() does (per cell), then everything on
-// lanes, with the same operations as per cell (so the same bits without contraction).
-template <class T, int N>
-FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t first,
-                      const InversionOptions& options, RuleError<T>* errors) {
-  using V = Lanes<T>;
-  constexpr int L = int(V::SizeAtCompileTime);
-  V x[N], w[N];
-  for (int lane = 0; lane < L; ++lane) {
-    const std::size_t c = first + std::size_t(lane);
-    T leading[3];  // what scaling_of reads: m_0, m_1 and, with four or more moments, m_2
-    constexpr int read = 2 * N < 3 ? 2 * N : 3;
-    for (int k = 0; k < read; ++k) leading[k] = in.moments[k][c];
-    const MomentScaling s = scaling_of(std::span<const T>(leading, read));
-    const T length = power_of_two<T>(-s.length_exponent), weight = power_of_two<T>(-s.weight_exponent);
-    for (int i = 0; i < N; ++i) {
-      x[i][lane] = times_power_of_two(out.nodes[i][c], length, -s.length_exponent);
-      w[i][lane] = times_power_of_two(out.weights[i][c], weight, -s.weight_exponent);
-    }
-  }
-  const RuleErrorTerms<V> terms = rule_error_terms<N>(w, N, T(options.moment_accuracy));
-  V nodes = V::Zero(), weights = V::Zero();
-  NodeSensitivity<V> sensitivity[N];
-  positive_sensitivities(x, w, N, sensitivity);
-  for (int i = 0; i < N; ++i) add_node_error(nodes, weights, sensitivity[i], w[i], V(x[i].abs()), terms);
-  for (int lane = 0; lane < L; ++lane) errors[lane] = {nodes[lane], weights[lane]};
-}
-
-// The error estimate of every cell's rule as invert() makes it with `options`, after the
-// rules are in place: stored in the error spans when they are given, and, with a required
-// accuracy, a rule that misses it marked inaccurate. On lanes for runs of L cells with all N
-// nodes on [0, ∞), per cell otherwise.
-template <class T, int N>
-void estimate_errors(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, const InversionOptions& options) {
-  constexpr std::size_t L = std::size_t(batch_lanes<T>);
-  const bool store = !out.node_errors.empty();
-  const auto has_rule = [&out](std::size_t c) {
-    return out.status[c] == InversionStatus::ok || out.status[c] == InversionStatus::reduced;
-  };
-  RuleError<T> errors[L];
-  for (std::size_t first = 0; first < in.cells(); first += L) {
-    const std::size_t count = in.cells() - first < L ? in.cells() - first : L;
-    bool full = count == L && options.support == Support::positive_half_line;
-    for (std::size_t lane = 0; lane < count && full; ++lane) full = out.status[first + lane] == InversionStatus::ok;
-    if (full) lane_rule_errors(in, out, first, options, errors);
-    for (std::size_t lane = 0; lane < count; ++lane) {
-      const std::size_t c = first + lane;
-      RuleError<T> error;  // −1: no rule
-      if (full)
-        error = errors[lane];
-      else if (has_rule(c))
-        error = cell_rule_error(in, out, c, options);
-      if (has_rule(c) && options.required_accuracy > 0 && !meets(error, T(options.required_accuracy)))
-        out.status[c] = InversionStatus::inaccurate;
-      if (store) {
-        out.node_errors[c] = error.nodes;
-        out.weight_errors[c] = error.weights;
-      }
-    }
-  }
+    if (queues.queues[k - 4].size > 0) solve_reduced_queue(queues, k, in, out, options);
 }
 
 // Whether every span of a batch has as many entries as it has cells (the error spans: or none).
 template <class T, int N>
 bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
   const std::size_t cells = in.cells();
-  const bool errors = out.node_errors.empty() && out.weight_errors.empty();
+  const bool no_errors = out.node_errors.empty() && out.weight_errors.empty();
   bool same = out.sizes.size() == cells && out.status.size() == cells &&
-              (errors || (out.node_errors.size() == cells && out.weight_errors.size() == cells));
+              (no_errors || (out.node_errors.size() == cells && out.weight_errors.size() == cells)) &&
+              (out.reduction_errors.empty() || out.reduction_errors.size() == cells);
   for (const std::span<const T>& moment : in.moments) same = same && moment.size() == cells;
   for (int i = 0; i < N; ++i) same = same && out.nodes[i].size() == cells && out.weights[i].size() == cells;
   return same;
@@ -631,21 +655,17 @@ template <class T, int N>
 
 // The same with InversionOptions: its support, and the error estimate (estimate_error,
 // moment_accuracy, required_accuracy) as invert() makes it, from each cell's rule; algorithm and
-// solver are those of the batched path (Wheeler, the solvers above). The estimate is made after
-// the lanes: on lanes for runs of cells with all N nodes on [0, ∞), per cell otherwise.
+// solver are those of the batched path (Wheeler, the solvers above). The estimate of a rule the
+// lanes validated is made on the lanes on [0, ∞), before unscaling, and per cell otherwise.
 template <class T, int N>
 [[nodiscard]] bool invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
                                   const InversionOptions& options) {
   static_assert(N >= 1, "fluidbed::moments::invert_batched: N >= 1 nodes per cell");
   if (!detail::same_cell_counts(in, out)) return false;
   if (options.support == Support::positive_half_line)
-    detail::invert_batched<Support::positive_half_line>(in, out);
+    detail::invert_batched<Support::positive_half_line>(in, out, options);
   else
-    detail::invert_batched<Support::real_line>(in, out);
-  if (options.estimate_error || options.required_accuracy > 0)
-    detail::estimate_errors(in, out, options);
-  else if (!out.node_errors.empty())
-    for (std::size_t c = 0; c < in.cells(); ++c) out.node_errors[c] = out.weight_errors[c] = T(-1);
+    detail::invert_batched<Support::real_line>(in, out, options);
   return true;
 }
 

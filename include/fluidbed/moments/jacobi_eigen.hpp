@@ -26,6 +26,19 @@ struct Quadrature {
 
 namespace detail {
 
+// Multiplies the nodes by 2^length_exponent and the weights by 2^weight_exponent, exactly where
+// the results are normal numbers: a rule from the scaled units of the inversion to the caller's
+// (unscale, inversion.hpp) and back (estimated_error, accuracy.hpp).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE void scale_rule(Quadrature<T, N>& q, int length_exponent, int weight_exponent) {
+  const T length = power_of_two<T>(length_exponent);
+  const T weight = power_of_two<T>(weight_exponent);
+  for (int i = 0; i < q.size; ++i) {
+    q.nodes[i] = times_power_of_two(q.nodes[i], length, length_exponent);
+    q.weights[i] = times_power_of_two(q.weights[i], weight, weight_exponent);
+  }
+}
+
 // Orders the first n nodes ascending, carrying their weights (insertion sort: n is small).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE void sort_nodes(Quadrature<T, N>& q) {

@@ -64,6 +64,11 @@ constexpr const char* status_name(InversionStatus status) {
   return "<not an InversionStatus>";
 }
 
+// Whether a result with this status carries a rule (ok, reduced, inaccurate).
+constexpr bool has_rule(InversionStatus status) {
+  return status == InversionStatus::ok || status == InversionStatus::reduced || status == InversionStatus::inaccurate;
+}
+
 // Estimated relative errors of a rule, the largest over its nodes and over its weights
 // (accuracy.hpp): node errors relative to the node on [0, ∞), to the largest |node| on the real
 // line; weight errors relative to the weight. −1 where no estimate was asked for; +∞ where the
@@ -72,6 +77,10 @@ template <class T>
 struct RuleError {
   T nodes = T(-1);
   T weights = T(-1);
+  // For a reduced rule: the estimated relative error of the coefficient that ended it
+  // (first_failing_index), relative to that coefficient; >= 1 means the reduction lies within the
+  // error (the set may be realizable with more nodes). −1 for every other status.
+  T reduction = T(-1);
 };
 
 template <class T, int N>
