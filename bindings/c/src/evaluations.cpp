@@ -206,8 +206,9 @@ extern "C" fluidbed_status fluidbed_invert_moments_with_accuracy(int node_count,
                                                                  double* node_errors, double* weight_errors,
                                                                  fluidbed_error* error) {
   return guarded(error, [&] {
+    const bool stored = node_errors != nullptr || weight_errors != nullptr;
     const fluidbed::moments::InversionOptions options{.support = support_of(support),
-                                                      .estimate_error = node_errors != nullptr || weight_errors != nullptr,
+                                                      .estimate_error = stored,
                                                       .moment_accuracy = moment_accuracy,
                                                       .required_accuracy = required_accuracy};
     fluidbed::bindings::invert_moments(node_count, options, n, moments, nodes, weights, sizes, status, node_errors,
