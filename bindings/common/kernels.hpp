@@ -517,8 +517,8 @@ inline constexpr int max_nodes = 8;
 namespace detail {
 
 template <class T, int N>
-void invert_moments(moments::Support support, std::size_t n, const T* moments_in, T* nodes, T* weights, int* sizes,
-                    int* statuses) {
+void invert_moments(const moments::InversionOptions& options, std::size_t n, const T* moments_in, T* nodes,
+                    T* weights, int* sizes, int* statuses, T* node_errors, T* weight_errors) {
   moments::MomentBatch<T, N> in;
   for (int k = 0; k < 2 * N; ++k) in.moments[k] = std::span<const T>(moments_in + k * n, n);
   moments::QuadratureBatch<T, N> out;
@@ -529,26 +529,52 @@ void invert_moments(moments::Support support, std::size_t n, const T* moments_in
   std::vector<moments::InversionStatus> status(n);
   out.sizes = std::span<int>(sizes, n);
   out.status = std::span<moments::InversionStatus>(status);
-  if (!moments::invert_batched(in, out, support)) throw InvalidArgument("fluidbed: invert_moments: inconsistent sizes");
+  if (node_errors != nullptr) {
+    out.node_errors = std::span<T>(node_errors, n);
+    out.weight_errors = std::span<T>(weight_errors, n);
+  }
+  if (!moments::invert_batched(in, out, options)) throw InvalidArgument("fluidbed: invert_moments: inconsistent sizes");
   for (std::size_t c = 0; c < n; ++c) statuses[c] = static_cast<int>(status[c]);
 }
 
 }  // namespace detail
 
-// Inverts n cells' 2N moments each to N-node Gauss rules (moments::invert_batched), structure of
-// arrays: moment k of cell c at moments_in[k n + c], node i at nodes[i n + c], its weight at
-// weights[i n + c] (0 for i >= sizes[c]), the node count and the per-cell status
-// (moments::InversionStatus as int) of every cell. A cell that cannot be inverted has its status,
-// never an exception: only a node count outside 1 … max_nodes or a missing array throws.
+// The accuracies of the inversion's error estimate, or std::domain_error naming the first out
+// of its domain (the C++ library reads them unchecked).
+inline void require_valid(const moments::InversionOptions& options) {
+  const auto require_accuracy = [](std::string_view name, double accuracy) {
+    if (!(accuracy >= 0 && accuracy < std::numeric_limits<double>::infinity()))
+      fluidbed::detail::throw_domain_error("moments::invert_batched", name, accuracy, "must be finite and >= 0");
+  };
+  require_accuracy("moment_accuracy", options.moment_accuracy);
+  require_accuracy("required_accuracy", options.required_accuracy);
+}
+
+// Inverts n cells' 2N moments each to N-node Gauss rules (moments::invert_batched with
+// `options`: the support and the error estimate), structure of arrays: moment k of cell c at
+// moments_in[k n + c], node i at nodes[i n + c], its weight at weights[i n + c] (0 for
+// i >= sizes[c]), the node count and the per-cell status (moments::InversionStatus as int) of
+// every cell. node_errors and weight_errors may be null; either given receives each cell's
+// estimated largest relative node or weight error as QuadratureBatch::node_errors and
+// weight_errors do (−1: no rule, or options.estimate_error false and no required accuracy; +∞:
+// no digit). A cell that cannot be inverted has its status, never an exception: only a node
+// count outside 1 … max_nodes, a missing array or an accuracy out of its domain throws.
 template <class T>
-void invert_moments(int node_count, moments::Support support, std::size_t n, const T* moments_in, T* nodes,
-                    T* weights, int* sizes, int* statuses) {
+void invert_moments(int node_count, const moments::InversionOptions& options, std::size_t n, const T* moments_in,
+                    T* nodes, T* weights, int* sizes, int* statuses, T* node_errors = nullptr,
+                    T* weight_errors = nullptr) {
   if (node_count < 1 || node_count > max_nodes)
     throw InvalidArgument("fluidbed: invert_moments: " + std::to_string(node_count) + " nodes; 1 to " +
                           std::to_string(max_nodes) + " are offered");
   require_arrays(n, "invert_moments", moments_in, nodes, weights, sizes, statuses);
+  require_valid(options);
+  // invert_batched stores both estimates or neither: the one not asked for goes to scratch.
+  std::vector<T> unused((node_errors == nullptr) != (weight_errors == nullptr) ? n : 0);
+  if (node_errors == nullptr && weight_errors != nullptr) node_errors = unused.data();
+  if (weight_errors == nullptr && node_errors != nullptr) weight_errors = unused.data();
   detail::with_compiled_count<max_nodes>(std::size_t(node_count), [&]<std::size_t N>(detail::Count<N>) {
-    detail::invert_moments<T, int(N)>(support, n, moments_in, nodes, weights, sizes, statuses);
+    detail::invert_moments<T, int(N)>(options, n, moments_in, nodes, weights, sizes, statuses, node_errors,
+                                      weight_errors);
   });
 }
 

@@ -61,7 +61,8 @@ module fluidbed
   ! A cell's outcome of the inversion and the realizability test (fluidbed_inversion_status).
   integer, parameter, public :: FLUIDBED_INVERSION_OK = 0, FLUIDBED_INVERSION_REDUCED = 1, &
                                 FLUIDBED_INVERSION_ZERO_MASS = 2, FLUIDBED_INVERSION_NOT_REALIZABLE = 3, &
-                                FLUIDBED_INVERSION_INVALID_INPUT = 4, FLUIDBED_INVERSION_EIGEN_FAILURE = 5
+                                FLUIDBED_INVERSION_INVALID_INPUT = 4, FLUIDBED_INVERSION_EIGEN_FAILURE = 5, &
+                                FLUIDBED_INVERSION_INACCURATE = 6
   ! A cell's outcome of the correction (fluidbed_correction_status).
   integer, parameter, public :: FLUIDBED_CORRECTION_UNCHANGED = 0, FLUIDBED_CORRECTION_MCGRAW = 1, &
                                 FLUIDBED_CORRECTION_LOGNORMAL = 2, FLUIDBED_CORRECTION_MONODISPERSE = 3, &
@@ -383,14 +384,18 @@ module fluidbed
                             d_radial_distribution_d_temperatures
       type(fluidbed_c_error), intent(out) :: error
     end function
-    integer(c_int) function c_invert_moments(node_count, support, n, moments, nodes, weights, sizes, status, error) &
-        bind(C, name='fluidbed_invert_moments')
-      import :: c_int, c_size_t, c_double, fluidbed_c_error
+    integer(c_int) function c_invert_moments_with_accuracy(node_count, support, n, moments, moment_accuracy, &
+                                                           required_accuracy, nodes, weights, sizes, status, &
+                                                           node_errors, weight_errors, error) &
+        bind(C, name='fluidbed_invert_moments_with_accuracy')
+      import :: c_ptr, c_int, c_size_t, c_double, fluidbed_c_error
       integer(c_int), value :: node_count, support
       integer(c_size_t), value :: n
       real(c_double), intent(in) :: moments(*)
+      real(c_double), value :: moment_accuracy, required_accuracy
       real(c_double), intent(out) :: nodes(*), weights(*)
       integer(c_int), intent(out) :: sizes(*), status(*)
+      type(c_ptr), value :: node_errors, weight_errors
       type(fluidbed_c_error), intent(out) :: error
     end function
     integer(c_int) function c_moment_realizability(support, moment_count, n, moments, status, realizable_moments, &
@@ -995,22 +1000,38 @@ contains
   ! (moments shaped (cells, 2 node_count)) on `support`: nodes(c, i) ascending, weights(c, i) (0
   ! beyond sizes(c)), shaped (cells, node_count), and each cell's status(c)
   ! (FLUIDBED_INVERSION_*); a cell that cannot be inverted is a status, not an error.
+  ! The error estimate (fluidbed_invert_moments_with_accuracy), optional: moment_accuracy, the
+  ! relative accuracy of each moment (absent: 0, exact as given); required_accuracy (absent: 0,
+  ! none), a rule whose estimate exceeds it has the status FLUIDBED_INVERSION_INACCURATE (the rule
+  ! still returned); node_errors(c) and weight_errors(c), each cell's estimated largest relative
+  ! node error (to the node on [0, ∞), to the largest |node| on the real line) and weight error
+  ! (−1: no rule). Accuracies must be finite and >= 0 (FLUIDBED_DOMAIN_ERROR).
   integer function fluidbed_invert_moments(node_count, support, moments, nodes, weights, sizes, status, message, &
-                                           cell) result(code)
+                                           cell, moment_accuracy, required_accuracy, node_errors, weight_errors) &
+      result(code)
     integer, intent(in) :: node_count, support
     real(c_double), intent(in), contiguous, target :: moments(:, :)
     real(c_double), intent(out), contiguous, target :: nodes(:, :), weights(:, :)
     integer(c_int), intent(out), contiguous, target :: sizes(:), status(:)
     character(len=:), allocatable, intent(out), optional :: message
     integer, intent(out), optional :: cell
+    real(c_double), intent(in), optional :: moment_accuracy, required_accuracy
+    real(c_double), intent(out), contiguous, target, optional :: node_errors(:), weight_errors(:)
     type(fluidbed_c_error) :: error
+    real(c_double) :: accuracy_of_moments, required
     integer :: n
     n = size(moments, 1)
+    accuracy_of_moments = 0
+    if (present(moment_accuracy)) accuracy_of_moments = moment_accuracy
+    required = 0
+    if (present(required_accuracy)) required = required_accuracy
     if (sizes_agree(error, 'fluidbed_invert_moments', 'moments', &
-                    [size(moments, 2), shape(nodes), shape(weights), size(sizes), size(status)], &
-                    [2 * node_count, n, node_count, n, node_count, n, n])) &
-      code = c_invert_moments(int(node_count, c_int), int(support, c_int), int(n, c_size_t), moments, nodes, &
-                              weights, sizes, status, error)
+                    [size(moments, 2), shape(nodes), shape(weights), size(sizes), size(status), &
+                     optional_size(node_errors, n), optional_size(weight_errors, n)], &
+                    [2 * node_count, n, node_count, n, node_count, n, n, n, n])) &
+      code = c_invert_moments_with_accuracy(int(node_count, c_int), int(support, c_int), int(n, c_size_t), moments, &
+                                            accuracy_of_moments, required, nodes, weights, sizes, status, &
+                                            optional_array(node_errors), optional_array(weight_errors), error)
     code = int(error%status)
     if (present(message)) message = message_of(error)
     if (present(cell)) cell = int(error%index) + 1

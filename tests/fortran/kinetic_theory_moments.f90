@@ -1058,6 +1058,7 @@ contains
 
   subroutine check_moments()
     real(c_double) :: m(4, 4), nodes(4, 2), weights(4, 2), corrected(4, 4), failing(4), again(3, 4)
+    real(c_double) :: node_errors(2), weight_errors(2)
     integer(c_int) :: sizes(4), status(4), realizable(4), first_failing(4), corrected_realizable(4)
     type(fluidbed_correction_options) :: options
     character(len=:), allocatable :: message
@@ -1086,6 +1087,34 @@ contains
     call check(all(relative_difference(nodes(4, :), [-1.0_c_double, 2.0_c_double]) < 1e-12_c_double) .and. &
                all(relative_difference(weights(4, :), [0.4_c_double, 0.6_c_double]) < 1e-12_c_double), &
                'invert: the atoms 0.4, 0.6 at -1, 2 on the real line')
+    ! The error estimate: one node (x = m_1/m_0, w = m_0) with moments accurate to 1e-6 relative is
+    ! good to 2e-6 and 1e-6 (first order, exact; the rounding adds ~1e-17); an empty cell has no
+    ! rule (−1). A requirement of 1.5e-6: the status inaccurate, the rule still returned.
+    m(1, 1:2) = [3.0_c_double, 1.5e-4_c_double]
+    m(2, 1:2) = 0
+    code = fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:2, 1:2), nodes(1:2, 1:1), &
+                                   weights(1:2, 1:1), sizes(1:2), status(1:2), message, moment_accuracy=1e-6_c_double, &
+                                   node_errors=node_errors, weight_errors=weight_errors)
+    call check(code == FLUIDBED_OK .and. all(status(1:2) == [FLUIDBED_INVERSION_OK, FLUIDBED_INVERSION_ZERO_MASS]), &
+               'invert with an error estimate: ' // message)
+    call check(abs(node_errors(1) / 2e-6_c_double - 1) < 1e-9_c_double .and. &
+               abs(weight_errors(1) / 1e-6_c_double - 1) < 1e-9_c_double, &
+               'invert: one node is good to 2 moment accuracies, its weight to 1')
+    call check(same_bits(node_errors(2), -1.0_c_double) .and. same_bits(weight_errors(2), -1.0_c_double), &
+               'invert: an empty cell has no estimate')
+    code = fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:1, 1:2), nodes(1:1, 1:1), &
+                                   weights(1:1, 1:1), sizes(1:1), status(1:1), message, moment_accuracy=1e-6_c_double, &
+                                   required_accuracy=1.5e-6_c_double)
+    call check(code == FLUIDBED_OK .and. FLUIDBED_INVERSION_INACCURATE == 6 .and. &
+               status(1) == FLUIDBED_INVERSION_INACCURATE .and. sizes(1) == 1 .and. &
+               abs(nodes(1, 1) / 5e-5_c_double - 1) < 1e-14_c_double, 'invert beyond a required accuracy: ' // message)
+    code = fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:1, 1:2), nodes(1:1, 1:1), &
+                                   weights(1:1, 1:1), sizes(1:1), status(1:1), message, moment_accuracy=-1e-6_c_double)
+    call check(code == FLUIDBED_DOMAIN_ERROR .and. index(message, 'moment_accuracy') > 0, &
+               'invert: a negative moment accuracy: ' // message)
+    code = fluidbed_invert_moments(1, FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, m(1:2, 1:2), nodes(1:2, 1:1), &
+                                   weights(1:2, 1:1), sizes(1:2), status(1:2), message, node_errors=node_errors(1:1))
+    call check(code == FLUIDBED_INVALID_ARGUMENT, 'invert: node errors of 1 cell for 2')
 
     ! Realizability: m_0 m_2 < m_1^2 (ζ_2 = m_2/m_1 − m_1/m_0 = −0.5), m_1 m_3 < m_2^2, a realizable set.
     m(1, :) = [1.0_c_double, 1.0_c_double, 0.5_c_double, 0.3_c_double]

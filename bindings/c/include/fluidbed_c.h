@@ -381,6 +381,8 @@ typedef enum fluidbed_inversion_status {
   FLUIDBED_INVERSION_NOT_REALIZABLE = 3,  /* not even one node */
   FLUIDBED_INVERSION_INVALID_INPUT = 4,   /* a moment NaN or infinite, or the set beyond the floating-point range */
   FLUIDBED_INVERSION_EIGEN_FAILURE = 5,   /* the eigen-solver did not converge (never observed for sizes) */
+  FLUIDBED_INVERSION_INACCURATE = 6,      /* a rule (returned, as for ok or reduced) whose estimated error exceeds
+                                             the required accuracy (fluidbed_invert_moments_with_accuracy) */
   FLUIDBED_INVERSION_MAX_ENUM = 0x7fffffff
 } fluidbed_inversion_status;
 
@@ -395,6 +397,23 @@ typedef enum fluidbed_inversion_status {
 FLUIDBED_C_API fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_support support, size_t n,
                                                        const double* moments, double* nodes, double* weights,
                                                        int* sizes, int* status, fluidbed_error* error);
+
+/* fluidbed_invert_moments with the error estimate of each rule (the C++ moments::InversionOptions'
+ * moment_accuracy and required_accuracy; docs/closures/moments.md, "How many digits a rule has"):
+ * moment_accuracy >= 0, the relative accuracy of each of the caller's moments (0: exact as given),
+ * and required_accuracy >= 0, both finite (else FLUIDBED_DOMAIN_ERROR naming it, nothing written).
+ * If not NULL, node_errors[c] and weight_errors[c] receive the cell's estimated largest relative
+ * node error (relative to the node on [0, ∞), to the largest |node| on the real line) and weight
+ * error (relative to the weight), first order: −1 where the cell has no rule, +∞ where the rule
+ * has no digit. required_accuracy > 0: a rule whose estimated node or weight error exceeds it has
+ * the status FLUIDBED_INVERSION_INACCURATE, its nodes and weights still written (the estimate is
+ * then made even with both error arrays NULL; required_accuracy 0 and both NULL: no estimate, the
+ * results of fluidbed_invert_moments). The C++ moments::invert_batched with these options, bit for
+ * bit. */
+FLUIDBED_C_API fluidbed_status fluidbed_invert_moments_with_accuracy(
+    int node_count, fluidbed_support support, size_t n, const double* moments, double moment_accuracy,
+    double required_accuracy, double* nodes, double* weights, int* sizes, int* status, double* node_errors,
+    double* weight_errors, fluidbed_error* error);
 
 /* The realizability of n cells' moment sets m_0 … m_{moment_count−1} (moment_count from 1 to
  * 2 FLUIDBED_MAX_NODES; moment k of cell c at moments[k n + c]) on the support, by the signs of

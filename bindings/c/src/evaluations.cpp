@@ -17,7 +17,8 @@ static_assert(FLUIDBED_INVERSION_OK == int(InversionStatus::ok) &&
                   FLUIDBED_INVERSION_ZERO_MASS == int(InversionStatus::zero_mass) &&
                   FLUIDBED_INVERSION_NOT_REALIZABLE == int(InversionStatus::not_realizable) &&
                   FLUIDBED_INVERSION_INVALID_INPUT == int(InversionStatus::invalid_input) &&
-                  FLUIDBED_INVERSION_EIGEN_FAILURE == int(InversionStatus::eigen_failure),
+                  FLUIDBED_INVERSION_EIGEN_FAILURE == int(InversionStatus::eigen_failure) &&
+                  FLUIDBED_INVERSION_INACCURATE == int(InversionStatus::inaccurate),
               "fluidbed_inversion_status follows moments::InversionStatus");
 
 fluidbed::drag::Buoyancy buoyancy_of(fluidbed_buoyancy convention) {
@@ -193,7 +194,25 @@ extern "C" fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_supp
                                                    const double* moments, double* nodes, double* weights, int* sizes,
                                                    int* status, fluidbed_error* error) {
   return guarded(error, [&] {
-    fluidbed::bindings::invert_moments(node_count, support_of(support), n, moments, nodes, weights, sizes, status);
+    fluidbed::bindings::invert_moments(node_count, {.support = support_of(support)}, n, moments, nodes, weights, sizes,
+                                       status);
+  });
+}
+
+extern "C" fluidbed_status fluidbed_invert_moments_with_accuracy(int node_count, fluidbed_support support, size_t n,
+                                                                 const double* moments, double moment_accuracy,
+                                                                 double required_accuracy, double* nodes,
+                                                                 double* weights, int* sizes, int* status,
+                                                                 double* node_errors, double* weight_errors,
+                                                                 fluidbed_error* error) {
+  return guarded(error, [&] {
+    const bool stored = node_errors != nullptr || weight_errors != nullptr;
+    const fluidbed::moments::InversionOptions options{.support = support_of(support),
+                                                      .estimate_error = stored,
+                                                      .moment_accuracy = moment_accuracy,
+                                                      .required_accuracy = required_accuracy};
+    fluidbed::bindings::invert_moments(node_count, options, n, moments, nodes, weights, sizes, status, node_errors,
+                                       weight_errors);
   });
 }
 

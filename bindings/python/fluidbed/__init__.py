@@ -69,10 +69,10 @@ WithSlope = namedtuple("WithSlope", "value d_solid_fraction")
 WithDerivative = namedtuple("WithDerivative", "value derivative")
 Constitutive = namedtuple("Constitutive", "value d_solid_fraction d_granular_temperature")
 Stress = namedtuple("Stress", "pressure viscosity d_pressure d_viscosity")
-Quadrature = namedtuple("Quadrature", "nodes weights sizes status")
+Quadrature = namedtuple("Quadrature", "nodes weights sizes status node_errors weight_errors")
 
 #: A cell's outcome of ``invert`` (the C++ library's moments::InversionStatus).
-INVERSION_STATUSES = ("ok", "reduced", "zero_mass", "not_realizable", "invalid_input", "eigen_failure")
+INVERSION_STATUSES = ("ok", "reduced", "zero_mass", "not_realizable", "invalid_input", "eigen_failure", "inaccurate")
 
 
 def closure_names():
@@ -544,13 +544,23 @@ def dqmom_growth_diffusion_sources(nodes, weights, *, weights_kind="volume_fract
                                                                               gs, cs))
 
 
-def invert(moments, *, support="positive_half_line"):
+def invert(moments, *, support="positive_half_line", moment_accuracy=0.0, required_accuracy=0.0,
+           estimate_error=False):
     """Gauss quadratures of moment sets: ``moments`` of shape (..., 2N), the last axis m_0 … m_(2N−1)
     of one cell (N from 1 to 8); ``support`` "positive_half_line" (sizes, masses) or "real_line"
     (velocities). Returns a ``Quadrature`` of nodes and weights (..., N), ascending nodes, weight 0
     beyond a cell's node count, the node counts (...) and the statuses (..., indices into
-    INVERSION_STATUSES): a cell that cannot be inverted has its status, never an exception. The
-    C++ library's moments::invert_batched, bit for bit."""
+    INVERSION_STATUSES): a cell that cannot be inverted has its status, never an exception.
+
+    The error estimate of each rule (docs/closures/moments.md, "How many digits a rule has"):
+    ``moment_accuracy`` is the relative accuracy of each of the given moments (0: exact as given),
+    ``required_accuracy`` > 0 gives a rule whose estimated node or weight error exceeds it the status
+    "inaccurate" (the rule still returned). With ``estimate_error``, ``node_errors`` and
+    ``weight_errors`` (...) hold each cell's estimated largest relative node error (relative to the
+    node on [0, ∞), to the largest |node| on the real line) and weight error, first order: −1 where
+    the cell has no rule, inf where the rule has no digit; without it they are None, as the
+    derivatives of the closures are when not asked for. Accuracies must be finite and >= 0
+    (DomainError). The C++ library's moments::invert_batched with these options, bit for bit."""
     real_line = _support(support)
     m = np.asarray(moments)
     if m.ndim < 1 or m.shape[-1] % 2 or m.shape[-1] == 0:
@@ -558,11 +568,13 @@ def invert(moments, *, support="positive_half_line"):
     dtype = np.float32 if m.dtype == np.float32 else np.float64
     n = m.shape[-1] // 2
     cells = m.reshape(-1, 2 * n)
-    nodes, weights, sizes, status = _module(dtype).invert_moments(n, real_line,
-                                                                  np.ascontiguousarray(cells.T, dtype=dtype))
+    nodes, weights, sizes, status, node_errors, weight_errors = _module(dtype).invert_moments(
+        n, real_line, np.ascontiguousarray(cells.T, dtype=dtype), float(moment_accuracy), float(required_accuracy),
+        bool(estimate_error))
     shape = m.shape[:-1]
+    errors = (None if e is None else e.reshape(shape) for e in (node_errors, weight_errors))
     return Quadrature(nodes.T.reshape(*shape, n), weights.T.reshape(*shape, n), sizes.reshape(shape),
-                      status.reshape(shape))
+                      status.reshape(shape), *errors)
 
 
 # The class of each family.

@@ -125,9 +125,12 @@ py::tuple one_argument(const fb::NamedClosure& law, const Array<T>& x, bool deri
   return py::make_tuple(value, slope);
 }
 
-// Moment inversion of n cells, moment-major (moment k of cell c at [k, c]).
+// Moment inversion of n cells, moment-major (moment k of cell c at [k, c]), with the error
+// estimate's options (moments::InversionOptions): the estimates are returned where asked for,
+// None otherwise.
 template <class T>
-py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments_in) {
+py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments_in, double moment_accuracy,
+                         double required_accuracy, bool estimate_error) {
   if (moments_in.ndim() != 2)
     guarded([] { throw fb::InvalidArgument("fluidbed: invert_moments: moments must be (2N, cells)"); });
   const py::ssize_t n = moments_in.shape(1);
@@ -138,14 +141,18 @@ py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments
     });
   Array<T> nodes({static_cast<py::ssize_t>(node_count), n}), weights({static_cast<py::ssize_t>(node_count), n});
   py::array_t<int> sizes(n), status(n);
-  T *x = nodes.mutable_data(), *w = weights.mutable_data();
+  auto node_errors = output<T>(n, estimate_error), weight_errors = output<T>(n, estimate_error);
+  T *x = nodes.mutable_data(), *w = weights.mutable_data(), *dx = data_of(node_errors), *dw = data_of(weight_errors);
   int *s = sizes.mutable_data(), *st = status.mutable_data();
+  const fluidbed::moments::InversionOptions options{
+      .support = real_line ? fluidbed::moments::Support::real_line : fluidbed::moments::Support::positive_half_line,
+      .estimate_error = estimate_error,
+      .moment_accuracy = moment_accuracy,
+      .required_accuracy = required_accuracy};
   guarded([&] {
-    fb::invert_moments<T>(node_count, real_line ? fluidbed::moments::Support::real_line
-                                                : fluidbed::moments::Support::positive_half_line,
-                          static_cast<std::size_t>(n), moments_in.data(), x, w, s, st);
+    fb::invert_moments<T>(node_count, options, static_cast<std::size_t>(n), moments_in.data(), x, w, s, st, dx, dw);
   });
-  return py::make_tuple(nodes, weights, sizes, status);
+  return py::make_tuple(nodes, weights, sizes, status, node_errors, weight_errors);
 }
 
 // The moment functions' sets, moment-major (moment k of cell c at [k, c]): their count.

@@ -251,6 +251,61 @@ def test_inversion_statuses_shapes_and_errors():
         fluidbed.invert(legendre, support="half_line")
 
 
+@pytest.mark.parametrize("support,code", [("positive_half_line", 0), ("real_line", 1)])
+def test_error_estimate_of_the_reference_sets_bit_for_bit_with_the_c_interface(support, code):
+    sets = moment_sets()
+    ints, doubles = ctypes.POINTER(ctypes.c_int), ctypes.c_double
+    inaccurate = 0
+    for n in range(1, 9):
+        cells = np.array([m[:2 * n] for m in sets.values() if len(m) >= 2 * n])
+        estimate = fluidbed.invert(cells, support=support, moment_accuracy=1e-9, estimate_error=True)
+        required = np.median(np.maximum(estimate.node_errors, estimate.weight_errors)[estimate.node_errors >= 0])
+        python = fluidbed.invert(cells, support=support, moment_accuracy=1e-9, required_accuracy=required,
+                                 estimate_error=True)
+        moments = np.ascontiguousarray(cells.T)
+        nodes, weights = np.empty((n, len(cells))), np.empty((n, len(cells)))
+        sizes, status = np.empty(len(cells), np.intc), np.empty(len(cells), np.intc)
+        node_errors, weight_errors = np.empty(len(cells)), np.empty(len(cells))
+        assert C.fluidbed_invert_moments_with_accuracy(
+            n, code, ctypes.c_size_t(len(cells)), ptr(moments), doubles(1e-9), doubles(required), ptr(nodes),
+            ptr(weights), sizes.ctypes.data_as(ints), status.ctypes.data_as(ints), ptr(node_errors),
+            ptr(weight_errors), None) == 0
+        assert same_bits(python.nodes, nodes.T) and same_bits(python.weights, weights.T)
+        assert np.array_equal(python.sizes, sizes) and np.array_equal(python.status, status)
+        assert same_bits(python.node_errors, node_errors) and same_bits(python.weight_errors, weight_errors)
+        # The requirement changes statuses, not rules; the estimates are those made without it.
+        assert same_bits(python.nodes, estimate.nodes) and same_bits(python.node_errors, estimate.node_errors)
+        inaccurate += np.count_nonzero(python.status == fluidbed.INVERSION_STATUSES.index("inaccurate"))
+    assert inaccurate > 0
+
+
+def test_error_estimate_of_one_node_and_the_accuracy_options():
+    # One node: x = m_1/m_0 and w = m_0, so moments off by δ relative move x by up to 2δ and w by δ
+    # (first order, exact); the inversion's rounding, κ ε/√(2n) per moment with κ = 1/16 (accuracy.hpp),
+    # adds κ ε √2 and κ ε/√2.
+    delta, kappa_epsilon = 1e-6, np.finfo(np.float64).eps / 16
+    q = fluidbed.invert([[3.0, 1.5e-4], [0.0, 0.0]], moment_accuracy=delta, estimate_error=True)
+    np.testing.assert_allclose(q.node_errors[0], 2 * delta + np.sqrt(2) * kappa_epsilon, rtol=1e-14)
+    np.testing.assert_allclose(q.weight_errors[0], delta + kappa_epsilon / np.sqrt(2), rtol=1e-14)
+    assert q.node_errors[1] == -1 and q.weight_errors[1] == -1  # an empty cell: no rule, no estimate
+    assert [fluidbed.INVERSION_STATUSES[s] for s in q.status] == ["ok", "zero_mass"]
+    # Not asked for: None. A requirement below the estimate: "inaccurate", the rule still returned.
+    plain = fluidbed.invert([3.0, 1.5e-4])
+    assert plain.node_errors is None and plain.weight_errors is None
+    strict = fluidbed.invert([3.0, 1.5e-4], moment_accuracy=delta, required_accuracy=1.5 * delta)
+    assert fluidbed.INVERSION_STATUSES[strict.status] == "inaccurate" and strict.node_errors is None
+    assert same_bits(strict.nodes, plain.nodes) and same_bits(strict.weights, plain.weights)
+    assert fluidbed.INVERSION_STATUSES[fluidbed.invert([3.0, 1.5e-4], moment_accuracy=delta,
+                                                       required_accuracy=3 * delta).status] == "ok"
+    single = fluidbed.invert(np.array([3.0, 1.5e-4], np.float32), moment_accuracy=delta, estimate_error=True)
+    assert single.node_errors.dtype == np.float32
+    np.testing.assert_allclose(single.node_errors, 2 * delta + np.sqrt(2) * np.finfo(np.float32).eps / 16, rtol=1e-5)
+    for option in ("moment_accuracy", "required_accuracy"):
+        for bad in (-1e-3, np.nan, np.inf):
+            with pytest.raises(fluidbed.DomainError, match=option):
+                fluidbed.invert([3.0, 1.5e-4], **{option: bad})
+
+
 def test_elastic_moduli_bit_for_bit_with_the_c_interface():
     g = 9.80665
     for row in rows("elastic_state_reference.csv"):
