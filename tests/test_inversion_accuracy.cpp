@@ -318,7 +318,7 @@ TEST_CASE("invert: beyond first order, the estimate is the worst case over all s
   // their mixture, known to a relative δ each. The worst change of the two-node rule over the 16
   // sign patterns m_k (1 ± δ), each inverted in long double, against the estimate: equal to 1e-3
   // (the alternating pattern is the worst for every node on [0, ∞), and, here, for the weights),
-  // where first order alone falls short by up to 41 % (powder A's nodes at δ = 1.04e-3, half a
+  // where first order alone falls short by up to 29 % (powder A's nodes at δ = 1.04e-3, half a
   // unit of the printed third digit: 0.257 against 0.363).
   const std::array<std::array<double, 4>, 3> powders = {{{0.600, 5.45e1, 5.06e3, 4.82e5},
                                                          {0.600, 1.70e2, 4.98e4, 1.52e7},

@@ -69,7 +69,7 @@ WithSlope = namedtuple("WithSlope", "value d_solid_fraction")
 WithDerivative = namedtuple("WithDerivative", "value derivative")
 Constitutive = namedtuple("Constitutive", "value d_solid_fraction d_granular_temperature")
 Stress = namedtuple("Stress", "pressure viscosity d_pressure d_viscosity")
-Quadrature = namedtuple("Quadrature", "nodes weights sizes status node_errors weight_errors")
+Quadrature = namedtuple("Quadrature", "nodes weights sizes status node_errors weight_errors reduction_errors")
 
 #: A cell's outcome of ``invert`` (the C++ library's moments::InversionStatus).
 INVERSION_STATUSES = ("ok", "reduced", "zero_mass", "not_realizable", "invalid_input", "eigen_failure", "inaccurate")
@@ -557,8 +557,11 @@ def invert(moments, *, support="positive_half_line", moment_accuracy=0.0, requir
     ``required_accuracy`` > 0 gives a rule whose estimated node or weight error exceeds it the status
     "inaccurate" (the rule still returned). With ``estimate_error``, ``node_errors`` and
     ``weight_errors`` (...) hold each cell's estimated largest relative node error (relative to the
-    node on [0, ∞), to the largest |node| on the real line) and weight error, first order: −1 where
-    the cell has no rule, inf where the rule has no digit; without it they are None, as the
+    node on [0, ∞), to the largest |node| on the real line) and weight error: −1 where the cell has
+    no rule, inf where the rule has no digit; ``reduction_errors`` (...), for a cell whose rule has
+    fewer than N nodes because its set is not realizable with more, the error of that decision
+    relative to its threshold (>= 1: within the error, more nodes may be realizable), −1 for the
+    other cells; without ``estimate_error`` the three are None, as the
     derivatives of the closures are when not asked for. Accuracies must be finite and >= 0
     (DomainError). The C++ library's moments::invert_batched with these options, bit for bit."""
     real_line = _support(support)
@@ -568,11 +571,11 @@ def invert(moments, *, support="positive_half_line", moment_accuracy=0.0, requir
     dtype = np.float32 if m.dtype == np.float32 else np.float64
     n = m.shape[-1] // 2
     cells = m.reshape(-1, 2 * n)
-    nodes, weights, sizes, status, node_errors, weight_errors = _module(dtype).invert_moments(
+    nodes, weights, sizes, status, *estimates = _module(dtype).invert_moments(
         n, real_line, np.ascontiguousarray(cells.T, dtype=dtype), float(moment_accuracy), float(required_accuracy),
         bool(estimate_error))
     shape = m.shape[:-1]
-    errors = (None if e is None else e.reshape(shape) for e in (node_errors, weight_errors))
+    errors = (None if e is None else e.reshape(shape) for e in estimates)
     return Quadrature(nodes.T.reshape(*shape, n), weights.T.reshape(*shape, n), sizes.reshape(shape),
                       status.reshape(shape), *errors)
 

@@ -61,7 +61,7 @@ struct MomentBatch {
 // Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
 // weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
 // Every span must have as many entries as the batch has cells, except node_errors,
-// weight_errors and reduction_errors, which may be empty: given, they receive
+// weight_errors and reduction_errors, each of which may be empty: given, it receives its part of
 // InversionResult::error of each cell (its nodes, weights and reduction; −1 where no estimate was
 // asked for or the cell has no rule, or, for the reduction, is not reduced).
 template <class T, int N>
@@ -381,10 +381,8 @@ std::array<T, 2 * N> cell_moments(const MomentBatch<T, N>& in, std::size_t c) {
 // Cell c's error estimate into the error spans, when they are given.
 template <class T, int N>
 void store_error(const QuadratureBatch<T, N>& out, std::size_t c, const RuleError<T>& error) {
-  if (!out.node_errors.empty()) {
-    out.node_errors[c] = error.nodes;
-    out.weight_errors[c] = error.weights;
-  }
+  if (!out.node_errors.empty()) out.node_errors[c] = error.nodes;
+  if (!out.weight_errors.empty()) out.weight_errors[c] = error.weights;
   if (!out.reduction_errors.empty()) out.reduction_errors[c] = error.reduction;
 }
 
@@ -629,10 +627,9 @@ void invert_batched(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& ou
 template <class T, int N>
 bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out) {
   const std::size_t cells = in.cells();
-  const bool no_errors = out.node_errors.empty() && out.weight_errors.empty();
-  bool same = out.sizes.size() == cells && out.status.size() == cells &&
-              (no_errors || (out.node_errors.size() == cells && out.weight_errors.size() == cells)) &&
-              (out.reduction_errors.empty() || out.reduction_errors.size() == cells);
+  const auto optional_fits = [cells](std::size_t size) { return size == 0 || size == cells; };
+  bool same = out.sizes.size() == cells && out.status.size() == cells && optional_fits(out.node_errors.size()) &&
+              optional_fits(out.weight_errors.size()) && optional_fits(out.reduction_errors.size());
   for (const std::span<const T>& moment : in.moments) same = same && moment.size() == cells;
   for (int i = 0; i < N; ++i) same = same && out.nodes[i].size() == cells && out.weights[i].size() == cells;
   return same;
