@@ -518,7 +518,7 @@ namespace detail {
 
 template <class T, int N>
 void invert_moments(const moments::InversionOptions& options, std::size_t n, const T* moments_in, T* nodes,
-                    T* weights, int* sizes, int* statuses, T* node_errors, T* weight_errors, T* reduction_errors) {
+                    T* weights, int* sizes, int* statuses, T* node_errors, T* weight_errors, T* count_errors) {
   moments::MomentBatch<T, N> in;
   for (int k = 0; k < 2 * N; ++k) in.moments[k] = std::span<const T>(moments_in + k * n, n);
   moments::QuadratureBatch<T, N> out;
@@ -531,7 +531,7 @@ void invert_moments(const moments::InversionOptions& options, std::size_t n, con
   out.status = std::span<moments::InversionStatus>(status);
   if (node_errors != nullptr) out.node_errors = std::span<T>(node_errors, n);
   if (weight_errors != nullptr) out.weight_errors = std::span<T>(weight_errors, n);
-  if (reduction_errors != nullptr) out.reduction_errors = std::span<T>(reduction_errors, n);
+  if (count_errors != nullptr) out.count_errors = std::span<T>(count_errors, n);
   if (!moments::invert_batched(in, out, options)) throw InvalidArgument("fluidbed: invert_moments: inconsistent sizes");
   for (std::size_t c = 0; c < n; ++c) statuses[c] = static_cast<int>(status[c]);
 }
@@ -553,15 +553,15 @@ inline void require_valid(const moments::InversionOptions& options) {
 // `options`: the support and the error estimate), structure of arrays: moment k of cell c at
 // moments_in[k n + c], node i at nodes[i n + c], its weight at weights[i n + c] (0 for
 // i >= sizes[c]), the node count and the per-cell status (moments::InversionStatus as int) of
-// every cell. node_errors, weight_errors and reduction_errors may be null; each given receives
-// each cell's estimated largest relative node or weight error, or its reduction's error, as
+// every cell. node_errors, weight_errors and count_errors may be null; each given receives
+// each cell's estimated largest relative node or weight error, or its node count's error, as
 // QuadratureBatch's spans do (−1: no rule, not reduced, or options.estimate_error false and no
 // required accuracy; +∞: no digit). A cell that cannot be inverted has its status, never an exception: only a node
 // count outside 1 … max_nodes, a missing array or an accuracy out of its domain throws.
 template <class T>
 void invert_moments(int node_count, const moments::InversionOptions& options, std::size_t n, const T* moments_in,
                     T* nodes, T* weights, int* sizes, int* statuses, T* node_errors = nullptr,
-                    T* weight_errors = nullptr, T* reduction_errors = nullptr) {
+                    T* weight_errors = nullptr, T* count_errors = nullptr) {
   if (node_count < 1 || node_count > max_nodes)
     throw InvalidArgument("fluidbed: invert_moments: " + std::to_string(node_count) + " nodes; 1 to " +
                           std::to_string(max_nodes) + " are offered");
@@ -569,7 +569,7 @@ void invert_moments(int node_count, const moments::InversionOptions& options, st
   require_valid(options);
   detail::with_compiled_count<max_nodes>(std::size_t(node_count), [&]<std::size_t N>(detail::Count<N>) {
     detail::invert_moments<T, int(N)>(options, n, moments_in, nodes, weights, sizes, statuses, node_errors,
-                                      weight_errors, reduction_errors);
+                                      weight_errors, count_errors);
   });
 }
 

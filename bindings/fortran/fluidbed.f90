@@ -386,7 +386,7 @@ module fluidbed
     end function
     integer(c_int) function c_invert_moments_with_accuracy(node_count, support, n, moments, moment_accuracy, &
                                                            required_accuracy, nodes, weights, sizes, status, &
-                                                           node_errors, weight_errors, reduction_errors, error) &
+                                                           node_errors, weight_errors, count_errors, error) &
         bind(C, name='fluidbed_invert_moments_with_accuracy')
       import :: c_ptr, c_int, c_size_t, c_double, fluidbed_c_error
       integer(c_int), value :: node_count, support
@@ -395,7 +395,7 @@ module fluidbed
       real(c_double), value :: moment_accuracy, required_accuracy
       real(c_double), intent(out) :: nodes(*), weights(*)
       integer(c_int), intent(out) :: sizes(*), status(*)
-      type(c_ptr), value :: node_errors, weight_errors, reduction_errors
+      type(c_ptr), value :: node_errors, weight_errors, count_errors
       type(fluidbed_c_error), intent(out) :: error
     end function
     integer(c_int) function c_moment_realizability(support, moment_count, n, moments, status, realizable_moments, &
@@ -1005,12 +1005,12 @@ contains
   ! none), a rule whose estimate exceeds it has the status FLUIDBED_INVERSION_INACCURATE (the rule
   ! still returned); node_errors(c) and weight_errors(c), each cell's estimated largest relative
   ! node error (to the node on [0, ∞), to the largest |node| on the real line) and weight error
-  ! (−1: no rule); reduction_errors(c), for a cell with fewer than node_count nodes because its set
-  ! is not realizable with more, the error of that decision relative to its threshold (>= 1: within
-  ! the error; −1 for the other cells). Accuracies must be finite and >= 0 (FLUIDBED_DOMAIN_ERROR).
+  ! (−1: no rule); count_errors(c), the largest error, relative to its threshold, of the
+  ! realizability decisions that set the cell's node count (>= 1: the count lies within the error;
+  ! −1: no rule). Accuracies must be finite and >= 0 (FLUIDBED_DOMAIN_ERROR).
   integer function fluidbed_invert_moments(node_count, support, moments, nodes, weights, sizes, status, message, &
                                            cell, moment_accuracy, required_accuracy, node_errors, weight_errors, &
-                                           reduction_errors) result(code)
+                                           count_errors) result(code)
     integer, intent(in) :: node_count, support
     real(c_double), intent(in), contiguous, target :: moments(:, :)
     real(c_double), intent(out), contiguous, target :: nodes(:, :), weights(:, :)
@@ -1019,7 +1019,7 @@ contains
     integer, intent(out), optional :: cell
     real(c_double), intent(in), optional :: moment_accuracy, required_accuracy
     real(c_double), intent(out), contiguous, target, optional :: node_errors(:), weight_errors(:), &
-                                                                 reduction_errors(:)
+                                                                 count_errors(:)
     type(fluidbed_c_error) :: error
     real(c_double) :: accuracy_of_moments, required
     integer :: n
@@ -1031,12 +1031,12 @@ contains
     if (sizes_agree(error, 'fluidbed_invert_moments', 'moments', &
                     [size(moments, 2), shape(nodes), shape(weights), size(sizes), size(status), &
                      optional_size(node_errors, n), optional_size(weight_errors, n), &
-                     optional_size(reduction_errors, n)], &
+                     optional_size(count_errors, n)], &
                     [2 * node_count, n, node_count, n, node_count, n, n, n, n, n])) &
       code = c_invert_moments_with_accuracy(int(node_count, c_int), int(support, c_int), int(n, c_size_t), moments, &
                                             accuracy_of_moments, required, nodes, weights, sizes, status, &
                                             optional_array(node_errors), optional_array(weight_errors), &
-                                            optional_array(reduction_errors), error)
+                                            optional_array(count_errors), error)
     code = int(error%status)
     if (present(message)) message = message_of(error)
     if (present(cell)) cell = int(error%index) + 1

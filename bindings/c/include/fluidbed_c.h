@@ -405,10 +405,10 @@ FLUIDBED_C_API fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_
  * Each of the three error arrays may be NULL; given, node_errors[c] and weight_errors[c] receive
  * the cell's estimated largest relative node error (relative to the node on [0, ∞), to the largest
  * |node| on the real line) and weight error (relative to the weight): −1 where the cell has no
- * rule, +∞ where the rule has no digit; reduction_errors[c], for a cell whose rule has fewer than
- * node_count nodes because the set is not realizable with more, the error of that decision
- * relative to its threshold (>= 1: within the error, the set may be realizable with more nodes),
- * −1 for the other cells. required_accuracy > 0: a rule whose estimated node or weight error
+ * rule, +∞ where the rule has no digit; count_errors[c] the largest error, relative to its
+ * threshold, of the realizability decisions that set the cell's node count (>= 1: the count lies
+ * within the error, the set may be realizable with another count), −1 where the cell has no rule.
+ * required_accuracy > 0: a rule whose estimated node or weight error
  * exceeds it has the status FLUIDBED_INVERSION_INACCURATE, its nodes and weights still written
  * (the estimate is then made even with every error array NULL; required_accuracy 0 and all NULL:
  * no estimate, the results of fluidbed_invert_moments). The C++ moments::invert_batched with these
@@ -416,7 +416,7 @@ FLUIDBED_C_API fluidbed_status fluidbed_invert_moments(int node_count, fluidbed_
 FLUIDBED_C_API fluidbed_status fluidbed_invert_moments_with_accuracy(
     int node_count, fluidbed_support support, size_t n, const double* moments, double moment_accuracy,
     double required_accuracy, double* nodes, double* weights, int* sizes, int* status, double* node_errors,
-    double* weight_errors, double* reduction_errors, fluidbed_error* error);
+    double* weight_errors, double* count_errors, fluidbed_error* error);
 
 /* The realizability of n cells' moment sets m_0 … m_{moment_count−1} (moment_count from 1 to
  * 2 FLUIDBED_MAX_NODES; moment k of cell c at moments[k n + c]) on the support, by the signs of

@@ -204,15 +204,15 @@ extern "C" fluidbed_status fluidbed_invert_moments_with_accuracy(int node_count,
                                                                  double required_accuracy, double* nodes,
                                                                  double* weights, int* sizes, int* status,
                                                                  double* node_errors, double* weight_errors,
-                                                                 double* reduction_errors, fluidbed_error* error) {
+                                                                 double* count_errors, fluidbed_error* error) {
   return guarded(error, [&] {
-    const bool stored = node_errors != nullptr || weight_errors != nullptr || reduction_errors != nullptr;
+    const bool stored = node_errors != nullptr || weight_errors != nullptr || count_errors != nullptr;
     const fluidbed::moments::InversionOptions options{.support = support_of(support),
                                                       .estimate_error = stored,
                                                       .moment_accuracy = moment_accuracy,
                                                       .required_accuracy = required_accuracy};
     fluidbed::bindings::invert_moments(node_count, options, n, moments, nodes, weights, sizes, status, node_errors,
-                                       weight_errors, reduction_errors);
+                                       weight_errors, count_errors);
   });
 }
 

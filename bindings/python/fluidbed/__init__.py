@@ -69,7 +69,7 @@ WithSlope = namedtuple("WithSlope", "value d_solid_fraction")
 WithDerivative = namedtuple("WithDerivative", "value derivative")
 Constitutive = namedtuple("Constitutive", "value d_solid_fraction d_granular_temperature")
 Stress = namedtuple("Stress", "pressure viscosity d_pressure d_viscosity")
-Quadrature = namedtuple("Quadrature", "nodes weights sizes status node_errors weight_errors reduction_errors")
+Quadrature = namedtuple("Quadrature", "nodes weights sizes status node_errors weight_errors count_errors")
 
 #: A cell's outcome of ``invert`` (the C++ library's moments::InversionStatus).
 INVERSION_STATUSES = ("ok", "reduced", "zero_mass", "not_realizable", "invalid_input", "eigen_failure", "inaccurate")
@@ -558,10 +558,9 @@ def invert(moments, *, support="positive_half_line", moment_accuracy=0.0, requir
     "inaccurate" (the rule still returned). With ``estimate_error``, ``node_errors`` and
     ``weight_errors`` (...) hold each cell's estimated largest relative node error (relative to the
     node on [0, ∞), to the largest |node| on the real line) and weight error: −1 where the cell has
-    no rule, inf where the rule has no digit; ``reduction_errors`` (...), for a cell whose rule has
-    fewer than N nodes because its set is not realizable with more, the error of that decision
-    relative to its threshold (>= 1: within the error, more nodes may be realizable), −1 for the
-    other cells; without ``estimate_error`` the three are None, as the
+    no rule, inf where the rule has no digit; ``count_errors`` (...) the largest error, relative to
+    its threshold, of the realizability decisions that set the cell's node count (>= 1: the count
+    lies within the error, another count may be realizable), −1 where the cell has no rule; without ``estimate_error`` the three are None, as the
     derivatives of the closures are when not asked for. Accuracies must be finite and >= 0
     (DomainError). The C++ library's moments::invert_batched with these options, bit for bit."""
     real_line = _support(support)

@@ -142,9 +142,9 @@ py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments
   Array<T> nodes({static_cast<py::ssize_t>(node_count), n}), weights({static_cast<py::ssize_t>(node_count), n});
   py::array_t<int> sizes(n), status(n);
   auto node_errors = output<T>(n, estimate_error), weight_errors = output<T>(n, estimate_error),
-       reduction_errors = output<T>(n, estimate_error);
+       count_errors = output<T>(n, estimate_error);
   T *x = nodes.mutable_data(), *w = weights.mutable_data(), *dx = data_of(node_errors), *dw = data_of(weight_errors),
-    *dr = data_of(reduction_errors);
+    *dr = data_of(count_errors);
   int *s = sizes.mutable_data(), *st = status.mutable_data();
   const fluidbed::moments::InversionOptions options{
       .support = real_line ? fluidbed::moments::Support::real_line : fluidbed::moments::Support::positive_half_line,
@@ -155,7 +155,7 @@ py::tuple invert_moments(int node_count, bool real_line, const Array<T>& moments
     fb::invert_moments<T>(node_count, options, static_cast<std::size_t>(n), moments_in.data(), x, w, s, st, dx, dw,
                           dr);
   });
-  return py::make_tuple(nodes, weights, sizes, status, node_errors, weight_errors, reduction_errors);
+  return py::make_tuple(nodes, weights, sizes, status, node_errors, weight_errors, count_errors);
 }
 
 // The moment functions' sets, moment-major (moment k of cell c at [k, c]): their count.

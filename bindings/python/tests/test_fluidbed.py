@@ -266,18 +266,17 @@ def test_error_estimate_of_the_reference_sets_bit_for_bit_with_the_c_interface(s
         moments = np.ascontiguousarray(cells.T)
         nodes, weights = np.empty((n, len(cells))), np.empty((n, len(cells)))
         sizes, status = np.empty(len(cells), np.intc), np.empty(len(cells), np.intc)
-        node_errors, weight_errors, reduction_errors = (np.empty(len(cells)) for _ in range(3))
+        node_errors, weight_errors, count_errors = (np.empty(len(cells)) for _ in range(3))
         assert C.fluidbed_invert_moments_with_accuracy(
             n, code, ctypes.c_size_t(len(cells)), ptr(moments), doubles(1e-9), doubles(required), ptr(nodes),
             ptr(weights), sizes.ctypes.data_as(ints), status.ctypes.data_as(ints), ptr(node_errors),
-            ptr(weight_errors), ptr(reduction_errors), None) == 0
+            ptr(weight_errors), ptr(count_errors), None) == 0
         assert same_bits(python.nodes, nodes.T) and same_bits(python.weights, weights.T)
         assert np.array_equal(python.sizes, sizes) and np.array_equal(python.status, status)
         assert same_bits(python.node_errors, node_errors) and same_bits(python.weight_errors, weight_errors)
-        assert same_bits(python.reduction_errors, reduction_errors)
-        # A reduction's error where the rule has fewer than n nodes, −1 elsewhere.
-        with_rule = python.node_errors >= 0
-        assert np.array_equal(python.reduction_errors >= 0, with_rule & (python.sizes < n))
+        assert same_bits(python.count_errors, count_errors)
+        # A count error for every cell with a rule, −1 elsewhere.
+        assert np.array_equal(python.count_errors >= 0, python.node_errors >= 0)
         # The requirement changes statuses, not rules; the estimates are those made without it.
         assert same_bits(python.nodes, estimate.nodes) and same_bits(python.node_errors, estimate.node_errors)
         inaccurate += np.count_nonzero(python.status == fluidbed.INVERSION_STATUSES.index("inaccurate"))
@@ -296,8 +295,9 @@ def test_error_estimate_of_one_node_and_the_accuracy_options():
     assert [fluidbed.INVERSION_STATUSES[s] for s in q.status] == ["ok", "zero_mass"]
     # Not asked for: None. A requirement below the estimate: "inaccurate", the rule still returned.
     plain = fluidbed.invert([3.0, 1.5e-4])
-    assert plain.node_errors is None and plain.weight_errors is None and plain.reduction_errors is None
-    assert list(q.reduction_errors) == [-1, -1]  # a full rule, an empty cell: no reduction
+    assert plain.node_errors is None and plain.weight_errors is None and plain.count_errors is None
+    # The count's one decision, ζ_1 = m_1/m_0 > 0, moves by δ + ε relative (U_1/V_1 = 1).
+    np.testing.assert_allclose(q.count_errors, [delta + np.finfo(np.float64).eps, -1], rtol=1e-14)
     strict = fluidbed.invert([3.0, 1.5e-4], moment_accuracy=delta, required_accuracy=1.5 * delta)
     assert fluidbed.INVERSION_STATUSES[strict.status] == "inaccurate" and strict.node_errors is None
     assert same_bits(strict.nodes, plain.nodes) and same_bits(strict.weights, plain.weights)

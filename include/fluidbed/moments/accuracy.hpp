@@ -206,46 +206,13 @@ FLUIDBED_HOST_DEVICE void add_node_error(V& nodes, V& weights, const NodeSensiti
   weights = ops::larger_error(weights, (terms.perturbation * s.weight + terms.tiny_weight) * per_weight);
 }
 
-// The estimate for a rule of n = q.size >= 1 nodes and its 2n moments m, both in the exactly
-// scaled units of the inversion (nodes and moments O(1)); moment_accuracy as estimated_error().
-template <class T, int N>
-FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const Quadrature<T, N>& q, Support support,
-                                                    const T& moment_accuracy) {
-  using std::abs;
-  using std::sqrt;
-  const int n = q.size;
-  FLUIDBED_EXPECTS(n >= 1 && n <= N && m.size() == std::size_t(2 * n));  // the callers' counts
-  const bool positive = support == Support::positive_half_line;
-  T p[N + 1] = {};  // P(x) = Π_j (x − x_j), lowest coefficient first (general path only)
-  T largest = T(0);
-  if (!positive) {
-    p[0] = T(1);
-    for (int j = 0; j < n; ++j) {
-      p[j + 1] = p[j];
-      for (int k = j; k > 0; --k) p[k] = p[k - 1] - q.nodes[j] * p[k];
-      p[0] = -q.nodes[j] * p[0];
-      largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
-    }
-  }
-  const RuleErrorTerms<T> terms = rule_error_terms<N>(q.weights.data(), n, moment_accuracy);
-  NodeSensitivity<T> s[N];
-  if (positive)
-    positive_sensitivities(q.nodes.data(), q.weights.data(), n, s);
-  else
-    for (int i = 0; i < n; ++i) s[i] = general_node_sensitivity(m, q, p, i);
-  RuleError<T> error{T(0), T(0)};
-  for (int i = 0; i < n; ++i)
-    add_node_error(error.nodes, error.weights, s[i], q.weights[i], positive ? T(abs(q.nodes[i])) : largest, terms);
-  return error;
-}
-
-// The rounding of the realizability decision as a relative perturbation of each moment (see
-// reduction_error): ε. Measured over random 4–10-atom size distributions in double and 3–5-atom
-// ones in float (log-normal sizes around 100 µm, σ_ln 0.45 and 1.3), whose exact moments are
-// realizable with every atom, so that each reduced status is a decision of the rounding: every
-// such failing coefficient lay within 0.45 ε U of zero (reduction_error >= 2.2 with ε), the median
-// within 0.06 ε U; a set lowered by 0.1 % in one moment beyond a three-atom boundary gives 7e-12
-// in double.
+// The rounding of the realizability decisions as a relative perturbation of each moment (see
+// passed_decisions_error and failed_decision_error): ε. Measured over random 4–10-atom size
+// distributions in double and 3–5-atom ones in float (log-normal sizes around 100 µm, σ_ln 0.45 and
+// 1.3), whose exact moments are realizable with every atom, so that each reduced status is a
+// decision of the rounding: every such failing coefficient lay within 0.45 ε U of zero (its error
+// >= 2.2 with ε), the median within 0.06 ε U; a set lowered by 0.1 % in one moment beyond a
+// three-atom boundary gives 7e-12 in double.
 template <class T>
 FLUIDBED_HOST_DEVICE constexpr T decision_rounding() {
   return std::numeric_limits<T>::epsilon();
@@ -286,9 +253,116 @@ FLUIDBED_HOST_DEVICE T square_sensitivity(const T (&q)[M], int degree, std::span
   return sum;
 }
 
+// The decisions an n-node rule passed on [0, ∞): ζ_d > 0, d = 1 … 2n − 1. Each is the sign of a
+// minimum over monic polynomials (see failed_decision_error), V_2k = m_0 β_1 ⋯ β_k = ∫ p_k² dμ and
+// V_2k+1 = ∫ q_k² x dμ (q_k orthogonal for x dμ, whose recurrence is α'_k = ζ_2k+1 + ζ_2k+2,
+// β'_k = ζ_2k ζ_2k+1), moved by relative moment changes δ by at most δ U_d, U_d the sum of the
+// absolute coefficients of p_k² (or x q_k²) against the moments. Their roots are positive, so
+// those coefficients alternate and U_2k = ∫ p_k(−x)² dμ, U_2k+1 = ∫ x q_k(−x)² dμ: polynomials of
+// degree <= 2n − 1, integrated exactly by the rule. Returned: the largest perturbation U_d/|V_d|,
+// from the rule (x, w) and its recurrence (α_0 … α_{n−1}, β_1 … β_{n−1}), all in scaled units;
+// O(n²), scalar or lanes (as lane_ops).
+template <class V, int N>
+FLUIDBED_HOST_DEVICE V passed_decisions_error(const V* x, const V* w, const V* alpha, const V* beta, int n,
+                                              const V& perturbation) {
+  using ops = lane_ops<V>;
+  using T = typename ops::scalar;
+  n = n < N ? n : N;
+  // Every entry set, so that GCC 12 -O3 sees no read of an unset one (as rule_error_terms).
+  V zeta[2 * N], spread[2 * N];  // zeta[d − 1] = ζ_d, spread[d − 1] = U_d
+  for (int d = 0; d < 2 * N; ++d) zeta[d] = spread[d] = ops::constant(T(0));
+  zeta[0] = alpha[0];
+  for (int k = 1; k < n; ++k) {
+    zeta[2 * k - 1] = beta[k] / zeta[2 * k - 2];
+    zeta[2 * k] = alpha[k] - zeta[2 * k - 1];
+  }
+  for (int j = 0; j < n; ++j) {
+    V p_previous = ops::constant(T(0)), p = ops::constant(T(1));  // p_k(−x_j)
+    V q_previous = ops::constant(T(0)), q = ops::constant(T(1));  // q_k(−x_j)
+    for (int k = 0; k < n; ++k) {
+      if (k > 0) spread[2 * k - 1] = spread[2 * k - 1] + w[j] * p * p;
+      spread[2 * k] = spread[2 * k] + w[j] * x[j] * q * q;
+      if (k + 1 == n) break;
+      const V p_recalled = k > 0 ? V(beta[k] * p_previous) : ops::constant(T(0));
+      const V q_recalled = k > 0 ? V(zeta[2 * k - 1] * zeta[2 * k] * q_previous) : ops::constant(T(0));
+      const V p_next = (T(0) - x[j] - alpha[k]) * p - p_recalled;
+      const V q_next = (T(0) - x[j] - (zeta[2 * k] + zeta[2 * k + 1])) * q - q_recalled;
+      p_previous = p;
+      p = p_next;
+      q_previous = q;
+      q = q_next;
+    }
+  }
+  V mass = ops::constant(T(0));
+  for (int j = 0; j < n; ++j) mass = mass + w[j];
+  V value = mass, largest = ops::constant(T(0));  // V_d = m_0 ζ_1 ⋯ ζ_d
+  for (int d = 0; d < 2 * n - 1; ++d) {
+    value = value * zeta[d];
+    largest = ops::larger_error(largest, perturbation * spread[d] / ops::abs(value));
+  }
+  return largest;
+}
+
+// The decisions an n-node rule passed on the real line, β_k > 0, k = 1 … n − 1: V_k = m_0 β_1 ⋯ β_k
+// = min ∫ q² dμ, moved by at most δ Σ_i |c_i m_i| (c the coefficients of p_k²), the moments of
+// either sign: from the coefficients, O(n³). The largest perturbation U_k/|V_k| (0 for one node).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE T real_line_passed_decisions_error(std::span<const T> m, const Recurrence<T, N>& r, int n,
+                                                        const T& perturbation) {
+  using std::abs;
+  T largest = T(0), value = m[0];
+  for (int k = 1; k < n; ++k) {
+    T previous[N + 1], p[N + 1];
+    orthogonal_polynomials(r, k, previous, p);
+    value *= r.beta[k];
+    largest = lane_ops<T>::larger_error(largest, perturbation * square_sensitivity(p, k, m, 0) / abs(value));
+  }
+  return largest;
+}
+
+// The estimate for a rule of n = q.size >= 1 nodes, its 2n moments m and their recurrence r (α_0 …
+// α_{n−1}, β_1 … β_{n−1} used), all in the exactly scaled units of the inversion (nodes and moments
+// O(1)); moment_accuracy as estimated_error(). The count: the decisions the rule passed.
+template <class T, int N>
+FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const Quadrature<T, N>& q,
+                                                    const Recurrence<T, N>& r, Support support,
+                                                    const T& moment_accuracy) {
+  using std::abs;
+  using std::sqrt;
+  const int n = q.size;
+  FLUIDBED_EXPECTS(n >= 1 && n <= N && m.size() == std::size_t(2 * n));  // the callers' counts
+  const bool positive = support == Support::positive_half_line;
+  T p[N + 1] = {};  // P(x) = Π_j (x − x_j), lowest coefficient first (general path only)
+  T largest = T(0);
+  if (!positive) {
+    p[0] = T(1);
+    for (int j = 0; j < n; ++j) {
+      p[j + 1] = p[j];
+      for (int k = j; k > 0; --k) p[k] = p[k - 1] - q.nodes[j] * p[k];
+      p[0] = -q.nodes[j] * p[0];
+      largest = abs(q.nodes[j]) > largest ? abs(q.nodes[j]) : largest;
+    }
+  }
+  const RuleErrorTerms<T> terms = rule_error_terms<N>(q.weights.data(), n, moment_accuracy);
+  NodeSensitivity<T> s[N];
+  if (positive)
+    positive_sensitivities(q.nodes.data(), q.weights.data(), n, s);
+  else
+    for (int i = 0; i < n; ++i) s[i] = general_node_sensitivity(m, q, p, i);
+  RuleError<T> error{T(0), T(0)};
+  for (int i = 0; i < n; ++i)
+    add_node_error(error.nodes, error.weights, s[i], q.weights[i], positive ? T(abs(q.nodes[i])) : largest, terms);
+  const T perturbation = moment_accuracy + decision_rounding<T>();
+  error.count = positive ? passed_decisions_error<T, N>(q.nodes.data(), q.weights.data(), r.alpha.data(),
+                                                        r.beta.data(), n, perturbation)
+                         : real_line_passed_decisions_error(m, r, n, perturbation);
+  return error;
+}
+
 // How near the realizability decision that ended a reduced rule of n = r.size nodes lies to its
 // threshold: the relative error of the coefficient that failed (j = first_failing_index), from the
-// moments' accuracy and the rounding, relative to that coefficient. Each failing test is the sign
+// moments' accuracy and the rounding, relative to that coefficient (the count error of a reduced
+// rule is the larger of this and passed_decisions_error()). Each failing test is the sign
 // of a ratio of Hankel determinants, a minimum over monic polynomials q of degree n:
 //   ζ_2n ([0, ∞)) or β_n (real line):  V = m_0 β_1 ⋯ β_n = H_2n/H_2n−2 = min ∫ q² dμ,  at q = p_n;
 //   ζ_2n+1 ([0, ∞)):                   V = −p_{n+1}(0)/p_n(0) m_0 β_1 ⋯ β_n = H_2n+1/H_2n−1
@@ -302,7 +376,7 @@ FLUIDBED_HOST_DEVICE T square_sensitivity(const T (&q)[M], int degree, std::span
 // or not finite, or the failure is a non-finite α (real line). Scaled moments and recurrence
 // (levels beyond r.size as Wheeler computed them).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE T reduction_error(std::span<const T> m, const Recurrence<T, N>& r, int failing_index,
+FLUIDBED_HOST_DEVICE T failed_decision_error(std::span<const T> m, const Recurrence<T, N>& r, int failing_index,
                                        Support support, const T& moment_accuracy) {
   using std::abs;
   using std::isfinite;
@@ -333,14 +407,14 @@ FLUIDBED_HOST_DEVICE T reduction_error(std::span<const T> m, const Recurrence<T,
   return isfinite(error) ? error : infinity;
 }
 
-// reduction_error() of a reduced set m_0 … m_{2N'−1} in the caller's units, its analysis redone
-// as invert() makes it (Wheeler's recurrence on the exactly scaled moments).
+// failed_decision_error() of a reduced set m_0 … m_{2N'−1} in the caller's units, its analysis
+// redone as invert() makes it (Wheeler's recurrence on the exactly scaled moments).
 template <class T, int N>
-FLUIDBED_HOST_DEVICE T reduction_error(std::span<const T> m, Support support, const T& moment_accuracy) {
+FLUIDBED_HOST_DEVICE T failed_decision_error(std::span<const T> m, Support support, const T& moment_accuracy) {
   const ScaledAnalysis<T, N> a = analyse<T, N>(m, support);
   Recurrence<T, N> r = a.recurrence;
   r.size = a.scan.realizable_moments / 2;
-  return reduction_error(a.moments.view(), r, a.scan.first_failing_index, support, moment_accuracy);
+  return failed_decision_error(a.moments.view(), r, a.scan.first_failing_index, support, moment_accuracy);
 }
 
 }  // namespace detail
@@ -363,7 +437,8 @@ FLUIDBED_HOST_DEVICE RuleError<T> estimated_error(std::span<const T> moments, co
   const detail::ScaledMoments<T, N> scaled = detail::scaled_moments<T, N>(moments);
   Quadrature<T, N> q = rule;
   detail::scale_rule(q, -scaled.scaling.length_exponent, -scaled.scaling.weight_exponent);
-  return detail::scaled_rule_error(scaled.view(), q, support, moment_accuracy);
+  const Recurrence<T, N> r = wheeler_unscaled<T, N>(scaled.view());
+  return detail::scaled_rule_error(scaled.view(), q, r, support, moment_accuracy);
 }
 
 }  // namespace fluidbed::moments

@@ -61,9 +61,9 @@ struct MomentBatch {
 // Where invert_batched() writes: node i of cell c at nodes[i][c] (ascending in i) and its
 // weight at weights[i][c], 0 for i >= sizes[c]; sizes[c] and status[c] as in InversionResult.
 // Every span must have as many entries as the batch has cells, except node_errors,
-// weight_errors and reduction_errors, each of which may be empty: given, it receives its part of
-// InversionResult::error of each cell (its nodes, weights and reduction; −1 where no estimate was
-// asked for or the cell has no rule, or, for the reduction, is not reduced).
+// weight_errors and count_errors, each of which may be empty: given, it receives its part of
+// InversionResult::error of each cell (−1 where no estimate was asked for or the cell has no
+// rule).
 template <class T, int N>
 struct QuadratureBatch {
   std::array<std::span<T>, N> nodes{};
@@ -72,7 +72,7 @@ struct QuadratureBatch {
   std::span<InversionStatus> status;
   std::span<T> node_errors;
   std::span<T> weight_errors;
-  std::span<T> reduction_errors;
+  std::span<T> count_errors;
 };
 
 namespace detail {
@@ -279,12 +279,13 @@ LaneScales<V> lane_scales(const V& m0, const V& m1, const V* second, LaneGuards<
   return s;
 }
 
-// Steps 1–4 of the batched pipeline on one lane value of cells: nodes and weights in scaled
-// units in x and w, the guards that tell which lanes they are valid for, and the scales that
-// unscale_lanes() takes them back to the caller's units with.
+// Steps 1–4 of the batched pipeline on one lane value of cells: the recurrence in alpha and beta
+// and the nodes and weights in x and w, in scaled units, the guards that tell which lanes they
+// are valid for, and the scales that unscale_lanes() takes the rules back to the caller's units
+// with.
 template <Support support, class V, int N>
-FLUIDBED_BATCHED_FLATTEN LaneScales<V> invert_lane_values(const V (&m)[2 * N], V (&x)[N], V (&w)[N],
-                                                          LaneGuards<V>& guards) {
+FLUIDBED_BATCHED_FLATTEN LaneScales<V> invert_lane_values(const V (&m)[2 * N], V (&alpha)[N], V (&beta)[N],
+                                                          V (&x)[N], V (&w)[N], LaneGuards<V>& guards) {
   using T = typename V::Scalar;
   constexpr int L = int(V::SizeAtCompileTime);
   for (int k = 0; k < 2 * N; ++k) guards.require_finite(m[k]);
@@ -303,7 +304,6 @@ FLUIDBED_BATCHED_FLATTEN LaneScales<V> invert_lane_values(const V (&m)[2 * N], V
   if constexpr (support == Support::real_line)
     guards.require_normal((m[1] == T(0)).select(V::Constant(T(1)), scaled[1].abs()));
   // 2. Recurrence.
-  V alpha[N], beta[N];
   wheeler_levels<V, N>(scaled, N, alpha, beta);
   // 3. Realizability: every β_k > 0 and finite (the per-cell Wheeler's stop test), and on
   // [0, ∞) every ζ_j > 0 and finite (as scan_coefficients()).
@@ -383,7 +383,7 @@ template <class T, int N>
 void store_error(const QuadratureBatch<T, N>& out, std::size_t c, const RuleError<T>& error) {
   if (!out.node_errors.empty()) out.node_errors[c] = error.nodes;
   if (!out.weight_errors.empty()) out.weight_errors[c] = error.weights;
-  if (!out.reduction_errors.empty()) out.reduction_errors[c] = error.reduction;
+  if (!out.count_errors.empty()) out.count_errors[c] = error.count;
 }
 
 // Cell c's estimate (−1 where none was made) stored, and its rule marked inaccurate where the
@@ -421,7 +421,7 @@ void finish_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out,
 }
 
 // Cell c's stored rule estimated per cell, as invert() with the options estimates it (from the
-// cell's moments: estimated_error(), and reduction_error() for a reduced rule), and recorded.
+// cell's moments: estimated_error(), and for a reduced rule failed_decision_error()), and recorded.
 template <class T, int N>
 void estimate_cell_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& out, std::size_t c,
                          const InversionOptions& options) {
@@ -431,7 +431,9 @@ void estimate_cell_error(const MomentBatch<T, N>& in, const QuadratureBatch<T, N
     error = estimated_error(std::span<const T>(cell).first(std::size_t(2 * out.sizes[c])), stored_rule(out, c),
                             options.support, T(options.moment_accuracy));
     if (out.status[c] == InversionStatus::reduced)
-      error.reduction = reduction_error<T, N>(std::span<const T>(cell), options.support, T(options.moment_accuracy));
+      error.count = lane_ops<T>::larger_error(error.count, failed_decision_error<T, N>(std::span<const T>(cell),
+                                                                                       options.support,
+                                                                                       T(options.moment_accuracy)));
   }
   finish_error(in, out, c, error, options);
 }
@@ -548,18 +550,20 @@ void invert_cell(const MomentBatch<T, N>& in, std::size_t c, ReducedRuleQueues<T
   if (queue.size == ReducedRuleQueues<T, N>::L) solve_reduced_queue(queues, reduced.size, in, out, options);
 }
 
-// The estimates of the N-node rules of a lane value on [0, ∞), in scaled units (x, w), with the
-// same operations as invert() per cell: the same bits where the rules are (N <= 2, no
-// contraction).
+// The estimates of the N-node rules of a lane value on [0, ∞), from their recurrences (alpha,
+// beta) and rules (x, w) in scaled units, with the same operations as invert() per cell: the same
+// bits where the rules are (N <= 2, no contraction).
 template <class V, int N, class T = typename V::Scalar>
-FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const V (&x)[N], const V (&w)[N], const T& moment_accuracy,
-                                               RuleError<T>* errors) {
+FLUIDBED_BATCHED_FLATTEN void lane_rule_errors(const V (&alpha)[N], const V (&beta)[N], const V (&x)[N],
+                                               const V (&w)[N], const T& moment_accuracy, RuleError<T>* errors) {
   const RuleErrorTerms<V> terms = rule_error_terms<N>(w, N, moment_accuracy);
   V nodes = V::Zero(), weights = V::Zero();
   NodeSensitivity<V> sensitivity[N];
   positive_sensitivities(x, w, N, sensitivity);
   for (int i = 0; i < N; ++i) add_node_error(nodes, weights, sensitivity[i], w[i], V(x[i].abs()), terms);
-  for (int lane = 0; lane < int(V::SizeAtCompileTime); ++lane) errors[lane] = {nodes[lane], weights[lane]};
+  const V perturbation = V::Constant(moment_accuracy + decision_rounding<T>());
+  const V count = passed_decisions_error<V, N>(x, w, alpha, beta, N, perturbation);
+  for (int lane = 0; lane < int(V::SizeAtCompileTime); ++lane) errors[lane] = {nodes[lane], weights[lane], count[lane]};
 }
 
 // Inverts `count` <= L cells from cell `first` on: the lane kernel, then invert_cell() for every
@@ -579,12 +583,13 @@ void invert_lanes(const MomentBatch<T, N>& in, std::size_t first, int count, Red
       for (int i = 0; i < count; ++i) m[k][i] = in.moments[k][first + i];
     }
   }
-  V x[N], w[N];
+  V alpha[N], beta[N], x[N], w[N];
   LaneGuards<V> guards;
-  const LaneScales<V> scales = invert_lane_values<support>(m, x, w, guards);
+  const LaneScales<V> scales = invert_lane_values<support>(m, alpha, beta, x, w, guards);
   constexpr bool errors_on_lanes = support == Support::positive_half_line;
   RuleError<T> errors[L];  // −1: not asked for
-  if (errors_on_lanes && wants_estimate(options)) lane_rule_errors(x, w, T(options.moment_accuracy), errors);
+  if (errors_on_lanes && wants_estimate(options))
+    lane_rule_errors(alpha, beta, x, w, T(options.moment_accuracy), errors);
   unscale_lanes(x, w, scales, guards);
   for (int k = 0; k < N; ++k) {
     if (count == L) {
@@ -629,7 +634,7 @@ bool same_cell_counts(const MomentBatch<T, N>& in, const QuadratureBatch<T, N>& 
   const std::size_t cells = in.cells();
   const auto optional_fits = [cells](std::size_t size) { return size == 0 || size == cells; };
   bool same = out.sizes.size() == cells && out.status.size() == cells && optional_fits(out.node_errors.size()) &&
-              optional_fits(out.weight_errors.size()) && optional_fits(out.reduction_errors.size());
+              optional_fits(out.weight_errors.size()) && optional_fits(out.count_errors.size());
   for (const std::span<const T>& moment : in.moments) same = same && moment.size() == cells;
   for (int i = 0; i < N; ++i) same = same && out.nodes[i].size() == cells && out.weights[i].size() == cells;
   return same;

@@ -172,8 +172,8 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
     return out;
   }
   if (wants_estimate(options))
-    out.error = scaled_rule_error(scaled.view().first(std::size_t(2 * r.size)), out.quadrature, options.support,
-                                  T(options.moment_accuracy));
+    out.error = scaled_rule_error(scaled.view().first(std::size_t(2 * r.size)), out.quadrature,
+                                  r, options.support, T(options.moment_accuracy));
   unscale(out.quadrature, s);
   if (!finite_rule(out.quadrature)) {
     out.quadrature = {};
@@ -185,8 +185,9 @@ FLUIDBED_HOST_DEVICE InversionResult<T, N> invert_with(std::span<const T> m, con
     add_vertex_changes(m.first(std::size_t(2 * r.size)), out.quadrature, options, out.error);
   out.status = r.size == requested ? InversionStatus::ok : InversionStatus::reduced;
   if (out.status == InversionStatus::reduced && wants_estimate(options))
-    out.error.reduction =
-        reduction_error(scaled.view(), r, out.first_failing_index, options.support, T(options.moment_accuracy));
+    out.error.count = lane_ops<T>::larger_error(
+        out.error.count,
+        failed_decision_error(scaled.view(), r, out.first_failing_index, options.support, T(options.moment_accuracy)));
   if (misses_requirement(out.error, options)) out.status = InversionStatus::inaccurate;
   return out;
 }

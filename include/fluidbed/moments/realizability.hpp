@@ -77,10 +77,11 @@ template <class T>
 struct RuleError {
   T nodes = T(-1);
   T weights = T(-1);
-  // For a reduced rule: the estimated relative error of the coefficient that ended it
-  // (first_failing_index), relative to that coefficient; >= 1 means the reduction lies within the
-  // error (the set may be realizable with more nodes). −1 for every other status.
-  T reduction = T(-1);
+  // The largest estimated error, relative to its threshold, of the realizability decisions that set
+  // the node count: every Stieltjes coefficient ζ_j (β_k on the real line) the rule passed, and for
+  // a reduced rule the one that failed (first_failing_index). >= 1: the count lies within the
+  // error (the set may be realizable with another count).
+  T count = T(-1);
 };
 
 template <class T, int N>
