@@ -19,6 +19,8 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fluidbed/moments/batched.hpp"
@@ -59,6 +61,22 @@ bool same_bits(T a, T b) {
 }
 
 constexpr fluidbed_buoyancy c_conventions[] = {FLUIDBED_BUOYANCY_CLASSICAL, FLUIDBED_BUOYANCY_PRESSURE_GRADIENT};
+
+// compare(std::integral_constant<int, N>{}, support) for N = 1 … FLUIDBED_MAX_NODES on both
+// supports, or compare(std::integral_constant<int, N>{}) where it takes no support.
+template <class Compare>
+void for_each_node_count(Compare&& compare) {
+  const auto counts = [&](auto... support) {
+    [&]<int... M>(std::integer_sequence<int, M...>) {
+      (compare(std::integral_constant<int, M + 1>{}, support...), ...);
+    }(std::make_integer_sequence<int, FLUIDBED_MAX_NODES>{});
+  };
+  if constexpr (std::is_invocable_v<Compare&, std::integral_constant<int, 1>>)
+    counts();
+  else
+    for (const fluidbed_support support : {FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE})
+      counts(support);
+}
 
 }  // namespace
 
@@ -412,10 +430,7 @@ TEST_CASE("C interface: every moment set of the moments reference table, 1 to 8 
     }
     compared += n;
   };
-  for (const fluidbed_support support : {FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE})
-    [&]<int... M>(std::integer_sequence<int, M...>) {
-      (compare(std::integral_constant<int, M + 1>{}, support), ...);
-    }(std::make_integer_sequence<int, 8>{});
+  for_each_node_count(compare);
   CHECK(compared > 100);
 
   // Statuses, not errors, for cells that cannot be inverted; errors for what is not a cell's.
@@ -575,10 +590,7 @@ TEST_CASE("C interface: the error estimate of every reference moment set, bit fo
     CHECK(unstored.sizes == plain.sizes);
     compared += n;
   };
-  for (const fluidbed_support support : {FLUIDBED_SUPPORT_POSITIVE_HALF_LINE, FLUIDBED_SUPPORT_REAL_LINE})
-    [&]<int... M>(std::integer_sequence<int, M...>) {
-      (compare(std::integral_constant<int, M + 1>{}, support), ...);
-    }(std::make_integer_sequence<int, 8>{});
+  for_each_node_count(compare);
   CHECK(compared > 100);
   CHECK(inaccurate > with_rule / 4);
   CHECK(inaccurate < 3 * with_rule / 4);
@@ -978,9 +990,7 @@ TEST_CASE("C interface: realizability and correction of the moments reference se
       compared += n;
     }
   };
-  [&]<int... M>(std::integer_sequence<int, M...>) {
-    (compare(std::integral_constant<int, M + 1>{}), ...);
-  }(std::make_integer_sequence<int, 8>{});
+  for_each_node_count(compare);
   CHECK(compared > 1000);
   // The corrupted copies reach every correction but the empty cell's and the failure's.
   for (const auto status : {FLUIDBED_CORRECTION_UNCHANGED, FLUIDBED_CORRECTION_MCGRAW, FLUIDBED_CORRECTION_LOGNORMAL,
