@@ -39,7 +39,13 @@
 //
 // Units: node errors are relative to the node on [0, ∞) and to the largest |node| on the real
 // line (a velocity node near zero has no relative error of its own); weight errors to the
-// weight. First order: an estimate above about 0.01 means few or no correct digits, not how many.
+// weight. First order: an estimate above about 0.01 means few or no correct digits, not how many
+// (invert() goes beyond it on [0, ∞) where the caller's moment_accuracy dominates: the rules of the
+// worst-case moment sets, inversion.hpp, add_vertex_changes).
+//
+// The node count is a set of decisions too, the signs of the Stieltjes coefficients; its error
+// (RuleError::count: passed_decisions_error, failed_decision_error below) is the largest of theirs,
+// each relative to its threshold.
 #pragma once
 
 #include <cmath>
@@ -423,8 +429,9 @@ FLUIDBED_HOST_DEVICE T failed_decision_error(std::span<const T> m, Support suppo
 // m_{2n−1}, n = rule.size, in the caller's units), given that each moment is known to a
 // relative `moment_accuracy` (0: exact as given, so only the inversion's rounding counts).
 // invert() returns the same estimate in InversionResult::error when InversionOptions asks for
-// it. Infinite where the rule has no digit to estimate (a zero weight, coincident nodes, or a
-// moment count that is not 2n); zeros for an empty rule.
+// it, except beyond first order (see the header comment). The count: the decisions the rule
+// passed (a full rule of these moments). Infinite where the rule has no digit to estimate (a zero
+// weight, coincident nodes, or a moment count that is not 2n); zeros for an empty rule.
 template <class T, int N>
 FLUIDBED_HOST_DEVICE RuleError<T> estimated_error(std::span<const T> moments, const Quadrature<T, N>& rule,
                                                   Support support = Support::positive_half_line,
