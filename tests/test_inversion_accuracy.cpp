@@ -65,6 +65,26 @@ Change change(const Quadrature<A, N>& a, const Quadrature<B, N>& b, Support supp
   return c;
 }
 
+// m with each of the moments first … first + count − 1 moved by ±delta relative, the signs the bits
+// of `pattern` (a set bit: +).
+template <class T, std::size_t M>
+std::array<T, M> sign_pattern(std::array<T, M> m, unsigned pattern, const T& delta, int first = 0,
+                              int count = int(M)) {
+  for (int k = 0; k < count; ++k) m[std::size_t(first + k)] *= 1 + (pattern >> k & 1u ? delta : -delta);
+  return m;
+}
+
+// Whether one of the 2^count sign patterns of sign_pattern() gives a set whose realizable moment
+// count (50-digit realizability test) satisfies `crossed`.
+template <std::size_t M, class Crossed>
+bool some_pattern_crosses(const std::array<F, M>& m, const F& delta, int first, int count, Crossed&& crossed) {
+  for (unsigned pattern = 0; pattern < (1u << count); ++pattern) {
+    const std::array<F, M> perturbed = sign_pattern(m, pattern, delta, first, count);
+    if (crossed(realizability<F, int(M / 2)>(std::span<const F>(perturbed)).realizable_moments)) return true;
+  }
+  return false;
+}
+
 // For moments each off by at most δ relative, the estimate's bound is attained, to first order,
 // by one of the 2^(2n) sign patterns δm_k = ±δ m_k: its worst case over them, from 50-digit
 // inversions, equals the estimate (δ = 1e-20: second-order terms ~1e-20 relative).
@@ -77,9 +97,7 @@ void check_worst_case(const std::array<F, N>& x, const std::array<F, N>& w, Supp
   const RuleError<F> estimate = estimated_error(std::span<const F>(m), exact.quadrature, support, delta);
   Change worst;
   for (unsigned pattern = 0; pattern < (1u << (2 * N)); ++pattern) {
-    std::array<F, 2 * N> perturbed = m;
-    for (int k = 0; k < 2 * N; ++k) perturbed[k] *= 1 + (pattern >> k & 1u ? delta : -delta);
-    const InversionResult<F, N> moved = invert<N>(perturbed, {.support = support});
+    const InversionResult<F, N> moved = invert<N>(sign_pattern(m, pattern, delta), {.support = support});
     REQUIRE(moved.status == InversionStatus::ok);
     const Change c = change(moved.quadrature, exact.quadrature, support);
     worst.nodes = std::max(worst.nodes, c.nodes);
@@ -188,12 +206,7 @@ void check_reduction_threshold(int failing) {
   const F threshold = F("1e-30") / r.error.count;  // ε of 50 digits is negligible beside 1e-30
   const auto flips = [&](const F& delta) {
     const int first = failing == 7 ? 1 : 0;  // ζ_7 depends on m_1 … m_7, ζ_6 on m_0 … m_6
-    for (unsigned pattern = 0; pattern < (1u << 7); ++pattern) {
-      std::array<F, 8> perturbed = m;
-      for (int k = 0; k < 7; ++k) perturbed[std::size_t(first + k)] *= 1 + (pattern >> k & 1u ? delta : -delta);
-      if (realizability<F, 4>(std::span<const F>(perturbed)).realizable_moments > failing) return true;
-    }
-    return false;
+    return some_pattern_crosses(m, delta, first, 7, [failing](int realizable) { return realizable > failing; });
   };
   CHECK(flips(F("1.02") * threshold));
   CHECK_FALSE(flips(F("0.98") * threshold));
@@ -220,12 +233,7 @@ void check_count_threshold(bool light_atom) {
   REQUIRE(r.status == InversionStatus::ok);
   const F threshold = F("1e-30") / r.error.count;
   const auto loses_a_node = [&](const F& delta) {
-    for (unsigned pattern = 0; pattern < (1u << 8); ++pattern) {
-      std::array<F, 8> perturbed = m;
-      for (int k = 0; k < 8; ++k) perturbed[std::size_t(k)] *= 1 + (pattern >> k & 1u ? delta : -delta);
-      if (realizability<F, 4>(std::span<const F>(perturbed)).realizable_moments < 8) return true;
-    }
-    return false;
+    return some_pattern_crosses(m, delta, 0, 8, [](int realizable) { return realizable < 8; });
   };
   CHECK(loses_a_node(F("1.02") * threshold));
   CHECK_FALSE(loses_a_node(F("0.98") * threshold));
@@ -365,8 +373,9 @@ TEST_CASE("invert: beyond first order, the estimate is the worst case over all s
       REQUIRE(r.status == InversionStatus::ok);
       long double worst_node = 0, worst_weight = 0;
       for (unsigned pattern = 0; pattern < 16; ++pattern) {
+        const std::array<double, 4> moved_moments = sign_pattern(m, pattern, delta);
         std::array<long double, 4> perturbed;
-        for (int k = 0; k < 4; ++k) perturbed[k] = m[k] * (1 + (pattern >> k & 1u ? delta : -delta));
+        std::copy(moved_moments.begin(), moved_moments.end(), perturbed.begin());
         const InversionResult<long double, 2> moved = invert<2>(perturbed);
         REQUIRE(moved.status == InversionStatus::ok);
         for (int i = 0; i < 2; ++i) {

@@ -224,26 +224,32 @@ FLUIDBED_HOST_DEVICE constexpr T decision_rounding() {
   return std::numeric_limits<T>::epsilon();
 }
 
-// The coefficients (lowest first) of the monic orthogonal polynomials p_0 … p_{degree} of a
-// recurrence, p_{k+1} = (x − α_k) p_k − β_k p_{k−1}: p_{degree − 1} in previous, p_{degree} in
-// current (degree <= N, and α_0 … α_{degree−1}, β_1 … β_{degree−1} used).
+// One step of the monic orthogonal polynomials of a recurrence (coefficients lowest first):
+// p_{level+1} = (x − α_level) p_level − β_level p_{level−1} from previous = p_{level−1} and
+// current = p_level, which become p_level and p_{level+1} (level < N).
+template <class T, int N>
+FLUIDBED_HOST_DEVICE void advance_orthogonal_polynomial(const Recurrence<T, N>& r, int level, T (&previous)[N + 1],
+                                                        T (&current)[N + 1]) {
+  const T beta = level > 0 ? r.beta[level] : T(0);
+  T next[N + 1] = {};
+  for (int k = 0; k <= level; ++k) {
+    next[k + 1] += current[k];
+    next[k] -= r.alpha[level] * current[k] + beta * previous[k];
+  }
+  for (int k = 0; k <= N; ++k) {
+    previous[k] = current[k];
+    current[k] = next[k];
+  }
+}
+
+// p_{degree − 1} in previous and p_{degree} in current (degree <= N; α_0 … α_{degree−1},
+// β_1 … β_{degree−1} used).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE void orthogonal_polynomials(const Recurrence<T, N>& r, int degree, T (&previous)[N + 1],
                                                  T (&current)[N + 1]) {
   for (int k = 0; k <= N; ++k) previous[k] = current[k] = T(0);
   current[0] = T(1);
-  for (int level = 0; level < degree; ++level) {
-    const T beta = level > 0 ? r.beta[level] : T(0);
-    T next[N + 1] = {};
-    for (int k = 0; k <= level; ++k) {
-      next[k + 1] += current[k];
-      next[k] -= r.alpha[level] * current[k] + beta * previous[k];
-    }
-    for (int k = 0; k <= N; ++k) {
-      previous[k] = current[k];
-      current[k] = next[k];
-    }
-  }
+  for (int level = 0; level < degree; ++level) advance_orthogonal_polynomial(r, level, previous, current);
 }
 
 // Σ_k |c_k m_{k + shift}| for c the coefficients of q², q of degree `degree` (lowest first).
@@ -311,15 +317,17 @@ FLUIDBED_HOST_DEVICE V passed_decisions_error(const V* x, const V* w, const V* a
 
 // The decisions an n-node rule passed on the real line, β_k > 0, k = 1 … n − 1: V_k = m_0 β_1 ⋯ β_k
 // = min ∫ q² dμ, moved by at most δ Σ_i |c_i m_i| (c the coefficients of p_k²), the moments of
-// either sign: from the coefficients, O(n³). The largest perturbation U_k/|V_k| (0 for one node).
+// either sign: from the coefficients (p_k by one recurrence step each), O(n³) for the squares'
+// coefficients. The largest perturbation U_k/|V_k| (0 for one node).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T real_line_passed_decisions_error(std::span<const T> m, const Recurrence<T, N>& r, int n,
                                                         const T& perturbation) {
   using std::abs;
   T largest = T(0), value = m[0];
+  T previous[N + 1], p[N + 1];  // p_{k−1}, p_k
+  orthogonal_polynomials(r, 0, previous, p);
   for (int k = 1; k < n; ++k) {
-    T previous[N + 1], p[N + 1];
-    orthogonal_polynomials(r, k, previous, p);
+    advance_orthogonal_polynomial(r, k - 1, previous, p);
     value *= r.beta[k];
     largest = lane_ops<T>::larger_error(largest, perturbation * square_sensitivity(p, k, m, 0) / abs(value));
   }
@@ -383,7 +391,7 @@ FLUIDBED_HOST_DEVICE RuleError<T> scaled_rule_error(std::span<const T> m, const 
 // (levels beyond r.size as Wheeler computed them).
 template <class T, int N>
 FLUIDBED_HOST_DEVICE T failed_decision_error(std::span<const T> m, const Recurrence<T, N>& r, int failing_index,
-                                       Support support, const T& moment_accuracy) {
+                                             Support support, const T& moment_accuracy) {
   using std::abs;
   using std::isfinite;
   const T infinity = std::numeric_limits<T>::infinity();
@@ -396,14 +404,10 @@ FLUIDBED_HOST_DEVICE T failed_decision_error(std::span<const T> m, const Recurre
   for (int k = 1; k <= n; ++k) value *= r.beta[k];
   T sensitivity;
   if (odd) {
-    T next[N + 1] = {};  // p_{n+1}
-    for (int k = 0; k <= n; ++k) {
-      next[k + 1] += p[k];
-      next[k] -= r.alpha[n] * p[k] + r.beta[n] * previous[k];
-    }
-    const T ratio = next[0] / p[0];  // p_{n+1}(0)/p_n(0)
+    advance_orthogonal_polynomial(r, n, previous, p);  // previous = p_n, p = p_{n+1}
+    const T ratio = p[0] / previous[0];                // p_{n+1}(0)/p_n(0)
     T kernel[N + 1] = {};
-    for (int k = 0; k <= n; ++k) kernel[k] = next[k + 1] - ratio * p[k + 1];
+    for (int k = 0; k <= n; ++k) kernel[k] = p[k + 1] - ratio * previous[k + 1];
     value *= -ratio;
     sensitivity = square_sensitivity(kernel, n, m, 1);
   } else {

@@ -120,8 +120,8 @@ FLUIDBED_HOST_DEVICE void add_vertex_changes(std::span<const T> m, const Quadrat
     for (int i = 0; i < q.size; ++i) {
       const T node_change = abs(moved.quadrature.nodes[i] - q.nodes[i]) / abs(q.nodes[i]);
       const T weight_change = abs(moved.quadrature.weights[i] - q.weights[i]) / abs(q.weights[i]);
-      error.nodes = node_change > error.nodes ? node_change : error.nodes;
-      error.weights = weight_change > error.weights ? weight_change : error.weights;
+      error.nodes = lane_ops<T>::larger_error(error.nodes, node_change);
+      error.weights = lane_ops<T>::larger_error(error.weights, weight_change);
     }
   }
 }
